@@ -1,0 +1,7 @@
+#pragma once
+#include <Eigen/Core>
+
+namespace mrsim {
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+}  // namespace mrsim

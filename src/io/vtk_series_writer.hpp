@@ -1,0 +1,28 @@
+#pragma once
+// ParaView time series (product.md "What a run writes"): frames/frame_NNNNNN.vtm with one
+// UnstructuredGrid block per level (binary, zlib) and frames.pvd listing every frame with its
+// simulated time at full precision. The .pvd is rewritten after each frame (write to a
+// temporary file, then rename) so a run killed or failed mid-way leaves a valid series.
+#include <filesystem>
+#include <span>
+#include <vector>
+
+#include "io/frame_data.hpp"
+
+namespace mrsim {
+
+class VtkSeriesWriter {
+ public:
+  explicit VtkSeriesWriter(std::filesystem::path out_dir);
+  /// Writes one frame (all levels) and updates frames.pvd. Throws RunError on I/O failure.
+  void write_frame(int frame_index, double time, std::span<const LevelFrameView> levels);
+  int frames_written() const { return static_cast<int>(entries_.size()); }
+
+ private:
+  struct Entry { int index; double time; std::filesystem::path file; };
+  void write_pvd() const;
+  std::filesystem::path out_dir_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace mrsim

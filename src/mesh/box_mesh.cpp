@@ -1,0 +1,38 @@
+#include "mesh/box_mesh.hpp"
+
+#include <stdexcept>
+
+namespace mrsim {
+
+TetMesh make_box_mesh(const Vec3& min, const Vec3& max, int nx, int ny, int nz) {
+  if (nx < 1 || ny < 1 || nz < 1) throw std::invalid_argument("make_box_mesh: cells must be >= 1");
+  TetMesh mesh;
+  auto id = [&](int i, int j, int k) { return i + (nx + 1) * (j + (ny + 1) * k); };
+  mesh.points.reserve(static_cast<size_t>((nx + 1) * (ny + 1) * (nz + 1)));
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i)
+        mesh.points.emplace_back(min.x() + (max.x() - min.x()) * i / nx,
+                                 min.y() + (max.y() - min.y()) * j / ny,
+                                 min.z() + (max.z() - min.z()) * k / nz);
+  // Kuhn split: the six tets around the main diagonal v0 -> v7 of every cell. Neighbouring
+  // cells share face diagonals, so the mesh is conforming.
+  static constexpr int kPaths[6][2] = {{1, 3}, {1, 5}, {2, 3}, {2, 6}, {4, 5}, {4, 6}};
+  mesh.tets.reserve(static_cast<size_t>(6 * nx * ny * nz));
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        int v[8];
+        for (int c = 0; c < 8; ++c) v[c] = id(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
+        for (const auto& p : kPaths) {
+          Tet t{v[0], v[p[0]], v[p[1]], v[7]};
+          if (signed_volume(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]],
+                            mesh.points[t[3]]) < 0)
+            std::swap(t[2], t[3]);
+          mesh.tets.push_back(t);
+        }
+      }
+  return mesh;
+}
+
+}  // namespace mrsim

@@ -1,0 +1,7 @@
+#include "mesh/tet_mesh.hpp"
+
+namespace mrsim {
+double signed_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return (b - a).dot((c - a).cross(d - a)) / 6.0;
+}
+}  // namespace mrsim

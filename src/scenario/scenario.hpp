@@ -1,0 +1,85 @@
+#pragma once
+// The typed, validated scenario the simulation consumes. It is built only from a JSON document
+// that already passed schemas/scenario.schema.json with defaults injected, so every field here
+// is set. All quantities are SI; `object.units` only describes the mesh files.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/vec.hpp"
+#include "mesh/mesh_reader.hpp"
+
+namespace mrsim {
+
+enum class StrainModel { Cauchy, GreenLagrange };
+enum class IntegratorKind { ModifiedEuler, StoermerVerlet, SemiImplicit };
+
+struct LevelSpec {
+  std::filesystem::path mesh;  // absolute, resolved against the scenario file's folder
+};
+
+struct MaterialSpec {
+  StrainModel model = StrainModel::GreenLagrange;
+  double lambda = 0, mu = 0;                // Lamé coefficients, Pa (always filled)
+  double youngs_modulus = 0, poisson = 0;   // derived or given (always filled, both logged)
+  double density = 0;                       // kg/m^3
+  double phi = 0, psi = 0;                  // damping on the strain rate, Pa.s
+};
+
+struct FixedRegion {
+  enum class Kind { Box, HalfSpace, Ids } kind = Kind::Box;
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();      // Box, metres
+  Vec3 point = Vec3::Zero(), normal = Vec3::Zero(); // HalfSpace: fixes (X - point).normal >= 0
+  std::vector<int> ids;                              // Ids: 0-based vertex ids of the level
+  int level = -1;                                    // -1: every level
+};
+
+struct InitialSpec {
+  Vec3 velocity = Vec3::Zero();          // m/s, uniform
+  Vec3 angular_velocity = Vec3::Zero();  // rad/s, about the centre of mass
+};
+
+struct TimeSpec {
+  IntegratorKind integrator = IntegratorKind::ModifiedEuler;
+  double frame_dt = 0.04;  // s, display frame
+  int substeps = 64;       // simulation steps per frame
+  double duration = 1.0;   // s
+  double divergence_energy_factor = 1.0;  // see simulation/divergence.hpp
+};
+
+struct OutputSpec {
+  std::filesystem::path dir;  // output folder
+  int every = 1;              // write a VTK frame every N display frames
+  bool vtk = true;            // write frames.pvd and frames/
+};
+
+struct Scenario {
+  std::string name;
+  std::filesystem::path source;  // the YAML file it came from
+  std::vector<LevelSpec> levels;
+  LengthUnit units = LengthUnit::Metre;
+  MaterialSpec material;
+  std::vector<FixedRegion> fixed;
+  Vec3 gravity = Vec3::Zero();
+  InitialSpec initial;
+  TimeSpec time;
+  OutputSpec output;
+  nlohmann::json resolved;  // the validated document with every default explicit
+};
+
+/// Reads a YAML scenario, applies `--set key.path=value` overrides, validates against
+/// schemas/scenario.schema.json, injects defaults and builds the typed scenario.
+/// Throws InputError (exit 2) naming the file, the key path and the YAML line/column.
+Scenario load_scenario(const std::filesystem::path& file,
+                       const std::vector<std::string>& overrides = {});
+
+/// The resolved scenario as YAML text (what `mrsim check` prints and `scenario.yaml` holds).
+std::string resolved_yaml(const Scenario& scenario);
+
+/// Path of the schema file used for validation.
+std::filesystem::path schema_path();
+
+}  // namespace mrsim
