@@ -1,5 +1,5 @@
 #pragma once
-#include <Eigen/Core>
+#include <Eigen/Dense>
 
 namespace mrsim {
 using Vec3 = Eigen::Vector3d;

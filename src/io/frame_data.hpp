@@ -31,7 +31,7 @@ struct FrameRecord {
   double time = 0;                 // s, simulated
   double kinetic_energy = 0;       // J
   double elastic_energy = 0;       // J
-  double wall_time = 0;            // s, wall clock spent since the run started
+  double wall_time = 0;            // s, wall clock spent simulating this frame (0 at frame 0)
   std::vector<std::int64_t> active;             // [L]
   std::vector<std::int64_t> ghosts;             // [L]
   std::vector<std::int64_t> force_evaluations;  // [L], cumulative point-force evaluations

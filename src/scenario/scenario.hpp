@@ -5,17 +5,21 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "core/vec.hpp"
 #include "mesh/mesh_reader.hpp"
+#include "physics/material_law.hpp"
+#include "time/integrator_kind.hpp"
 
 namespace mrsim {
 
-enum class StrainModel { Cauchy, GreenLagrange };
-enum class IntegratorKind { ModifiedEuler, StoermerVerlet, SemiImplicit };
+// The scenario speaks the physics' and the integrators' own enums (one definition each).
+using StrainModel = StrainMeasure;   // Cauchy, GreenLagrange
+using IntegratorKind = Integrator;   // ModifiedEuler, StoermerVerlet, SemiImplicit
 
 struct LevelSpec {
   std::filesystem::path mesh;  // absolute, resolved against the scenario file's folder
@@ -75,6 +79,11 @@ struct Scenario {
 /// Throws InputError (exit 2) naming the file, the key path and the YAML line/column.
 Scenario load_scenario(const std::filesystem::path& file,
                        const std::vector<std::string>& overrides = {});
+
+/// load_scenario for YAML text already in memory (e.g. a resolved scenario read back from a
+/// run's output). `source` names the text in messages and anchors relative mesh paths.
+Scenario load_scenario_text(std::string_view yaml, const std::filesystem::path& source,
+                            const std::vector<std::string>& overrides = {});
 
 /// The resolved scenario as YAML text (what `mrsim check` prints and `scenario.yaml` holds).
 std::string resolved_yaml(const Scenario& scenario);

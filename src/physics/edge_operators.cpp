@@ -1,0 +1,42 @@
+#include "physics/edge_operators.hpp"
+
+namespace mrsim {
+
+EdgeOperators build_edge_operators(const TetGeometry& geo, const PointAdjacency& adj) {
+  EdgeOperators ops;
+  ops.A.assign(adj.nbr.size(), Mat3::Zero());
+  ops.B.assign(adj.nbr.size(), Mat3::Zero());
+  const int n = adj.num_points();
+  // Per point i, gather from its incident tets: entry (i, j) for every other vertex j.
+  for (int i = 0; i < n; ++i) {
+    for (int s = adj.inc_start[i]; s < adj.inc_start[i + 1]; ++s) {
+      const int t = adj.inc_tet[s];
+      const int a = adj.inc_local[s];
+      const double V = geo.volume[t];
+      const Vec3& ga = geo.grad[t][a];
+      for (int b = 0; b < 4; ++b) {
+        if (b == a) continue;
+        const int e = find_neighbour_entry(adj, i, geo.tets[t][b]);
+        const Vec3& gb = geo.grad[t][b];
+        ops.A[e].noalias() += V * ga * gb.transpose();
+        ops.B[e].noalias() += V * (gb * ga.transpose() + ga.dot(gb) * Mat3::Identity());
+      }
+    }
+  }
+  return ops;
+}
+
+std::vector<Mat3> combine_edge_operators(const EdgeOperators& ops, double coefficient_a,
+                                         double coefficient_b) {
+  std::vector<Mat3> k(ops.A.size());
+  for (size_t e = 0; e < k.size(); ++e) k[e] = coefficient_a * ops.A[e] + coefficient_b * ops.B[e];
+  return k;
+}
+
+Mat3 diagonal_block(const std::vector<Mat3>& k_edges, const PointAdjacency& adj, int i) {
+  Mat3 d = Mat3::Zero();
+  for (int e = adj.nbr_start[i]; e < adj.nbr_start[i + 1]; ++e) d -= k_edges[e];
+  return d;
+}
+
+}  // namespace mrsim

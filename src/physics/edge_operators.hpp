@@ -1,0 +1,27 @@
+#pragma once
+// The λ/μ-independent edge matrices of method.md §2.2 [Eng]: per CSR entry (i, j)
+//   A_ij = Σ_t V_t ∇N_i ∇N_jᵀ,   B_ij = Σ_t V_t (∇N_j ∇N_iᵀ + (∇N_i·∇N_j) I),
+// so that K_ij = λA_ij + μB_ij (stiffness) and D_ij = φA_ij + ψB_ij (damping), and the linear
+// force is f_i = -Σ_j K_ij (u_j - u_i) - Σ_j D_ij (v_j - v_i).
+#include <vector>
+
+#include "physics/material_law.hpp"
+#include "physics/point_adjacency.hpp"
+#include "physics/tet_geometry.hpp"
+
+namespace mrsim {
+
+struct EdgeOperators {
+  std::vector<Mat3> A, B;  // indexed like PointAdjacency::nbr
+};
+
+EdgeOperators build_edge_operators(const TetGeometry& geo, const PointAdjacency& adj);
+
+/// K_ij (or D_ij) for every CSR entry: coefficient_a * A + coefficient_b * B.
+std::vector<Mat3> combine_edge_operators(const EdgeOperators& ops, double coefficient_a,
+                                         double coefficient_b);
+
+/// Diagonal block K_ii = -Σ_j K_ij (translations produce no force).
+Mat3 diagonal_block(const std::vector<Mat3>& k_edges, const PointAdjacency& adj, int i);
+
+}  // namespace mrsim

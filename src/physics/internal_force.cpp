@@ -1,0 +1,104 @@
+#include "physics/internal_force.hpp"
+
+#include "core/parallel.hpp"
+#include "physics/stress.hpp"
+
+namespace mrsim {
+
+namespace {
+
+void cauchy_gather(const LevelModel& m, const Vec3* u, const Vec3* v, Vec3* f) {
+  const int n = m.num_points();
+  const bool damped = !m.D.empty();
+  const int* start = m.adj.nbr_start.data();
+  const int* nbr = m.adj.nbr.data();
+#pragma omp parallel for schedule(static) if (n >= parallel_threshold())
+  for (int i = 0; i < n; ++i) {
+    Vec3 fi = Vec3::Zero();
+    const Vec3 ui = u[i];
+    for (int e = start[i]; e < start[i + 1]; ++e) fi.noalias() -= m.K[e] * (u[nbr[e]] - ui);
+    if (damped) {
+      const Vec3 vi = v[i];
+      for (int e = start[i]; e < start[i + 1]; ++e) fi.noalias() -= m.D[e] * (v[nbr[e]] - vi);
+    }
+    f[i] = fi;
+  }
+}
+
+// Per-tet nodal forces -V P ∇N_a (Green); the sum over a is zero up to rounding.
+inline void green_tet_forces(const LevelModel& m, int t, const Vec3* u, const Vec3* v,
+                             TetGradients& out) {
+  const TetGradients& g = m.geo.grad[t];
+  const Tet& tet = m.geo.tets[t];
+  const Mat3 G = tet_gradient(g, tet, u);
+  Mat3 P;
+  if (m.law.damped()) {
+    const Mat3 Gd = tet_gradient(g, tet, v);
+    P = green_piola(G, &Gd, m.law);
+  } else {
+    P = green_piola(G, nullptr, m.law);
+  }
+  P *= -m.geo.volume[t];
+  for (int a = 0; a < 4; ++a) out[a].noalias() = P * g[a];
+}
+
+void green_forces(const LevelModel& m, const Vec3* u, const Vec3* v, Vec3* f, ForceWorkspace& ws) {
+  const int nt = m.num_tets();
+  const int n = m.num_points();
+  ws.reserve_for(m);
+  TetGradients* tf = ws.tet_force.data();
+#pragma omp parallel if (n >= parallel_threshold())
+  {
+#pragma omp for schedule(static)
+    for (int t = 0; t < nt; ++t) green_tet_forces(m, t, u, v, tf[t]);
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      Vec3 fi = Vec3::Zero();
+      for (int s = m.adj.inc_start[i]; s < m.adj.inc_start[i + 1]; ++s)
+        fi += tf[m.adj.inc_tet[s]][m.adj.inc_local[s]];
+      f[i] = fi;
+    }
+  }
+}
+
+}  // namespace
+
+void ForceWorkspace::reserve_for(const LevelModel& model) {
+  if (model.law.strain == StrainMeasure::GreenLagrange && tet_force.size() != model.geo.tets.size())
+    tet_force.resize(model.geo.tets.size());
+}
+
+void internal_forces(const LevelModel& model, const Vec3* u, const Vec3* v, Vec3* f,
+                     ForceWorkspace& ws) {
+  if (model.law.strain == StrainMeasure::Cauchy)
+    cauchy_gather(model, u, v, f);
+  else
+    green_forces(model, u, v, f, ws);
+}
+
+Vec3 point_internal_force(const LevelModel& m, int i, const Vec3* u, const Vec3* v) {
+  Vec3 fi = Vec3::Zero();
+  for (int s = m.adj.inc_start[i]; s < m.adj.inc_start[i + 1]; ++s) {
+    const int t = m.adj.inc_tet[s];
+    const TetGradients& g = m.geo.grad[t];
+    const Mat3 G = tet_gradient(g, m.geo.tets[t], u);
+    const Mat3 Gd = tet_gradient(g, m.geo.tets[t], v);
+    const Mat3* gd = m.law.damped() ? &Gd : nullptr;
+    const Mat3 P = m.law.strain == StrainMeasure::GreenLagrange ? green_piola(G, gd, m.law)
+                                                        : cauchy_stress(G, gd, m.law);
+    fi -= m.geo.volume[t] * (P * g[m.adj.inc_local[s]]);
+  }
+  return fi;
+}
+
+double elastic_energy(const LevelModel& m, const Vec3* u) {
+  double energy = 0;
+  for (int t = 0; t < m.num_tets(); ++t) {
+    const Mat3 G = tet_gradient(m.geo.grad[t], m.geo.tets[t], u);
+    const Mat3 E = m.law.strain == StrainMeasure::GreenLagrange ? green_strain(G) : cauchy_strain(G);
+    energy += m.geo.volume[t] * energy_density(E, m.law);
+  }
+  return energy;
+}
+
+}  // namespace mrsim

@@ -1,0 +1,29 @@
+#pragma once
+// Elastic + strain-rate damping forces of one level (method.md §2.2–2.3), computed as per-point
+// gathers so the result is bit-identical for any thread count.
+//   Cauchy: f_i = -Σ_j K_ij (u_j - u_i) - Σ_j D_ij (v_j - v_i)     (edge matrices, §2.2)
+//   Green:  f_a = -Σ_{t∋a} V_t F_t (S_t + 𝒱_t) ∇N_a                (per-tet pass, then gather)
+#include <vector>
+
+#include "physics/level_model.hpp"
+
+namespace mrsim {
+
+/// Scratch memory reused across steps (no allocation in the step loop).
+struct ForceWorkspace {
+  std::vector<TetGradients> tet_force;  // Green: -V P ∇N_a per tet and local vertex
+  void reserve_for(const LevelModel& model);
+};
+
+/// f[i] = internal force on every point i of the level (overwrites f).
+void internal_forces(const LevelModel& model, const Vec3* u, const Vec3* v, Vec3* f,
+                     ForceWorkspace& ws);
+
+/// Internal force on one point from its incident tets only (used by the Jacobian probe of the
+/// semi-implicit step, method.md §5.3). Equal to internal_forces()[i] up to rounding.
+Vec3 point_internal_force(const LevelModel& model, int i, const Vec3* u, const Vec3* v);
+
+/// Strain energy Σ_t V_t W(E_t) with the level's strain measure (J). Fixed summation order.
+double elastic_energy(const LevelModel& model, const Vec3* u);
+
+}  // namespace mrsim

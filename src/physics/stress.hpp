@@ -1,0 +1,46 @@
+#pragma once
+// Per-tet stresses of method.md §1–2.3, shared by the force kernels, the energy and the tests.
+#include "core/vec.hpp"
+#include "physics/material_law.hpp"
+
+namespace mrsim {
+
+/// Green–Lagrange strain E = ½(G + Gᵀ + GᵀG).
+inline Mat3 green_strain(const Mat3& G) { return 0.5 * (G + G.transpose() + G.transpose() * G); }
+
+/// Cauchy (linear) strain ε = ½(G + Gᵀ).
+inline Mat3 cauchy_strain(const Mat3& G) { return 0.5 * (G + G.transpose()); }
+
+/// Isotropic Hooke law a·tr(E) I + 2b·E (λ, μ for stress; φ, ψ for eq. 2.22 damping).
+inline Mat3 hooke(const Mat3& E, double a, double b) {
+  Mat3 S = (2.0 * b) * E;
+  S.diagonal().array() += a * E.trace();
+  return S;
+}
+
+/// First Piola–Kirchhoff-like stress P = F (S + 𝒱) of §2.3 (Green), with the strain-rate
+/// damping 𝒱 = φ tr(Ė) I + 2ψ Ė, Ė = ½(FᵀĠ + ĠᵀF). The nodal force is f_a = -V P ∇N_a.
+inline Mat3 green_piola(const Mat3& G, const Mat3* Gdot, const MaterialLaw& law) {
+  const Mat3 F = Mat3::Identity() + G;
+  Mat3 S = hooke(green_strain(G), law.lambda, law.mu);
+  if (Gdot) {
+    const Mat3 FtGd = F.transpose() * (*Gdot);
+    S += hooke(0.5 * (FtGd + FtGd.transpose()), law.phi, law.psi);
+  }
+  return F * S;
+}
+
+/// Linear stress σ + ν (Cauchy): f_a = -V σ ∇N_a.
+inline Mat3 cauchy_stress(const Mat3& G, const Mat3* Gdot, const MaterialLaw& law) {
+  Mat3 s = hooke(cauchy_strain(G), law.lambda, law.mu);
+  if (Gdot) s += hooke(cauchy_strain(*Gdot), law.phi, law.psi);
+  return s;
+}
+
+/// Strain energy density (λ/2) tr(E)² + μ E:E of either strain.
+inline double energy_density(const Mat3& E, const MaterialLaw& law) {
+  const double tr = E.trace();
+  return 0.5 * law.lambda * tr * tr + law.mu * E.squaredNorm();
+}
+
+}  // namespace mrsim

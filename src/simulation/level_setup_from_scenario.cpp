@@ -1,0 +1,38 @@
+#include "simulation/level_setup_from_scenario.hpp"
+
+#include <algorithm>
+
+#include "simulation/fixed_points.hpp"
+
+namespace mrsim {
+
+MaterialLaw material_law(const MaterialSpec& spec) {
+  MaterialLaw law;
+  law.strain = spec.model;
+  law.lambda = spec.lambda;
+  law.mu = spec.mu;
+  law.phi = spec.phi;
+  law.psi = spec.psi;
+  law.density = spec.density;
+  return law;
+}
+
+LevelSetup level_setup(const Scenario& sc, const TetMesh& mesh) {
+  LevelSetup s;
+  s.law = material_law(sc.material);
+  s.gravity = sc.gravity;
+  s.integrator = sc.time.integrator;
+  s.dt = sc.time.frame_dt / sc.time.substeps;
+  s.fixed = select_fixed_points(mesh, sc.fixed);
+  s.initial_velocity = sc.initial.velocity;
+  s.initial_angular_velocity = sc.initial.angular_velocity;
+  return s;
+}
+
+double recommended_max_dt(const LevelModel& model, Integrator integrator) {
+  const double h = *std::min_element(model.min_edge.begin(), model.min_edge.end());
+  const double dt = 0.5 * h / model.law.p_wave_speed();
+  return integrator == Integrator::SemiImplicit ? 2 * dt : dt;
+}
+
+}  // namespace mrsim

@@ -1,0 +1,36 @@
+#pragma once
+// A whole run (product.md "What a run writes"): load and check the input, simulate frame by
+// frame, write scenario.yaml, frames.pvd + frames/, log.h5 and summary.json into the output
+// folder. Input problems throw InputError before anything is written; a divergence or an I/O
+// failure during the run throws RunError after every output of the frames before it is closed
+// and valid (summary.json records the failure).
+#include <cstdint>
+#include <functional>
+
+#include "scenario/scenario.hpp"
+
+namespace mrsim {
+
+struct RunProgress {
+  int frame = 0, frames = 0;     // frames done / total
+  double simulated_time = 0;     // s
+  double wall_elapsed = 0;       // s
+};
+
+struct RunOptions {
+  std::function<void(const RunProgress&)> progress;  // called after every frame
+};
+
+struct RunSummary {
+  int frames = 0;
+  std::int64_t steps = 0;
+  double wall_time = 0;
+};
+
+RunSummary run_scenario(const Scenario& scenario, const RunOptions& options = {});
+
+/// Loads every mesh of the scenario and checks it against the scenario (fixed regions, time
+/// step): what `mrsim check` does beyond the schema. Throws InputError.
+void check_scenario_inputs(const Scenario& scenario);
+
+}  // namespace mrsim

@@ -1,0 +1,47 @@
+#include "time/semi_implicit_filter.hpp"
+
+#include <algorithm>
+
+#include "core/parallel.hpp"
+#include "physics/internal_force.hpp"
+
+namespace mrsim {
+
+std::vector<Mat3> point_jacobians(const LevelModel& model) {
+  const int n = model.num_points();
+  std::vector<Mat3> J(n);
+  if (model.law.strain == StrainMeasure::Cauchy) {
+    for (int i = 0; i < n; ++i) J[i] = -diagonal_block(model.K, model.adj, i);
+    return J;
+  }
+  const double amplitude = 0.1 * *std::min_element(model.min_edge.begin(), model.min_edge.end());
+  std::vector<Vec3> u(n, Vec3::Zero()), v(n, Vec3::Zero());
+  // v = 0 during the probe, so the strain-rate damping does not enter J (elastic only).
+  for (int i = 0; i < n; ++i) {
+    const Vec3 f0 = Vec3::Zero();  // the rest state is force-free
+    for (int k = 0; k < 3; ++k) {
+      u[i] = Vec3::Zero();
+      u[i][k] = amplitude;
+      J[i].col(k) = (point_internal_force(model, i, u.data(), v.data()) - f0) / amplitude;
+    }
+    u[i] = Vec3::Zero();
+  }
+  return J;
+}
+
+SemiImplicitFilter::SemiImplicitFilter(const LevelModel& model, const std::vector<double>& inv_mass,
+                                       double dt) {
+  const std::vector<Mat3> J = point_jacobians(model);
+  w_.resize(J.size());
+  for (size_t i = 0; i < J.size(); ++i)
+    w_[i] = (Mat3::Identity() - (dt * dt * inv_mass[i]) * J[i]).inverse();
+}
+
+void SemiImplicitFilter::apply(PointState& s) const {
+  const int n = s.size();
+#pragma omp parallel for schedule(static) if (n >= parallel_threshold())
+  for (int i = 0; i < n; ++i)
+    if (s.free_point[i]) s.v[i] = w_[i] * s.v[i];
+}
+
+}  // namespace mrsim

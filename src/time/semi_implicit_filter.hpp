@@ -1,0 +1,28 @@
+#pragma once
+// Semi-implicit step of thesis eq. (5.1) (method.md §5.3): after the explicit kick, each
+// particle's velocity is multiplied by W_i = (I - dt²/m_i J_i)^-1, with J_i = ∂f_i/∂x_i probed
+// once at rest by displacing particle i alone (amplitude 0.1 × the shortest edge of its mesh,
+// one-sided differences, as in the source). J_i is exactly -K_ii for the Cauchy model.
+#include <vector>
+
+#include "physics/level_model.hpp"
+#include "time/point_state.hpp"
+
+namespace mrsim {
+
+/// J_i for every point of the level, probed at rest (u = v = 0).
+std::vector<Mat3> point_jacobians(const LevelModel& model);
+
+class SemiImplicitFilter {
+ public:
+  SemiImplicitFilter() = default;
+  SemiImplicitFilter(const LevelModel& model, const std::vector<double>& inv_mass, double dt);
+  /// v_i <- W_i v_i for every free point.
+  void apply(PointState& s) const;
+  const Mat3& W(int i) const { return w_[i]; }
+
+ private:
+  std::vector<Mat3> w_;
+};
+
+}  // namespace mrsim
