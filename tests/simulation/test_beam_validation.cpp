@@ -2,6 +2,7 @@
 // kind of mesh as the CalculiX C3D4 rows of the §2.3 table).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "beam_fixture.hpp"
@@ -27,8 +28,10 @@ TEST(BeamValidation, SuddenGravityOscillatesAboutTheStaticDeflectionAtF1) {
   const Oscillation o = measure_oscillation(w, dt);
   std::printf("20x4x4: static tip deflection %.5e m (%.3f of 3-D), f1 %.4f Hz over %d periods\n",
               o.mean, o.mean / kThreeD, o.frequency, o.periods);
-  // §2.3 table, structured 20x4x4 (C3D4, same mesh kind): 2.9861e-3 m = 0.794 of 3-D.
-  EXPECT_NEAR(o.mean / kThreeD, 0.794, 0.02);
+  // §2.3 table, structured 20x4x4 (C3D4, same mesh kind): 2.9861e-3 m = 0.794 of 3-D, inside
+  // the "-20 % at 4 across" band. The whole-period mean is good to ~0.5 % (higher modes).
+  EXPECT_NEAR(o.mean, 2.9861e-3, 0.01 * 2.9861e-3);
+  EXPECT_GT(o.mean / kThreeD, 0.75);
   // The Kuhn split is anisotropic (§2.3): on this mesh CalculiX gives 10.872 Hz for one bending
   // direction and 11.624 Hz for the other, which is the vertical one excited by gravity here
   // (a lumped mass lowers it by ~0.2 %). Band: same-mesh value ±1.5 %, and within the
@@ -36,4 +39,31 @@ TEST(BeamValidation, SuddenGravityOscillatesAboutTheStaticDeflectionAtF1) {
   EXPECT_NEAR(o.frequency, 11.624, 0.015 * 11.624);
   EXPECT_LT(o.frequency, 10.001 * 1.17);
   EXPECT_GE(o.periods, 10);
+}
+
+TEST(BeamValidation, DampedBeamRunToRestMatchesTheStaticBand) {
+  // Stiffness-proportional damping D = βK (φ = βλ, ψ = βμ) with ζ1 ≈ 0.1 brings the coarse beam
+  // to rest; explicit stability then needs dt ≈ dt_crit (√(1+ξ²) − ξ), ξ = β ω_max / 2 (§2.7).
+  const TetMesh mesh = beam_mesh(10);
+  const double dt = 5e-6;
+  LevelSetup setup = beam_setup(mesh, Integrator::ModifiedEuler, dt);
+  const double beta = 2.5e-3;  // s
+  setup.law.phi = beta * setup.law.lambda;
+  setup.law.psi = beta * setup.law.mu;
+  LevelSimulation sim(mesh, setup);
+  double previous = 0, w = 0;
+  int steps = 0;
+  for (; steps < 400000; steps += 2000) {
+    sim.advance(2000);
+    w = -tip_deflection(sim, mesh);
+    if (steps > 20000 && std::abs(w - previous) < 1e-7 * w) break;
+    previous = w;
+  }
+  std::printf("10x2x2 at rest after %.3f s: tip deflection %.5e m (%.3f of 3-D)\n", steps * dt, w,
+              w / kThreeD);
+  EXPECT_LT(steps, 400000);  // it did come to rest
+  // §2.3: structured 10x2x2 (2 across) gives 1.9500e-3 m = 0.518 of 3-D ("order of magnitude,
+  // -50 %" at 2 across). CalculiX C3D4 on this same structured split: 1.9500e-3 m; a damped
+  // explicit run driven to rest should reproduce a linear static solve (§2.3): within 0.5 %.
+  EXPECT_NEAR(w, 1.95e-3, 0.005 * 1.95e-3);
 }

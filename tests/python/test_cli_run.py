@@ -1,0 +1,126 @@
+#!/usr/bin/python3
+"""End-to-end checks of `mrsim run` / `mrsim check` (issue 2 points 2, 5, 7): exit codes,
+divergence stopping with intact outputs, --set, and bit-identical outputs for 1 and 2 threads."""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+import h5py
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader
+
+FAILURES = []
+PASSED = []
+
+
+def check(cond, what):
+    print(("ok   " if cond else "FAIL ") + what)
+    (PASSED if cond else FAILURES).append(what)
+
+
+def run(binary, *args, env=None):
+    return subprocess.run([binary, *args], capture_output=True, text=True, env=env, timeout=600)
+
+
+def pvd_times(folder):
+    root = ET.parse(os.path.join(folder, "frames.pvd")).getroot()
+    return [float(d.get("timestep")) for d in root.iter("DataSet")]
+
+
+def test_exit_codes(binary, scenario):
+    check(run(binary, "--version").returncode == 0, "--version exits 0")
+    check(run(binary, "run", "--help").returncode == 0, "run --help exits 0")
+    check(run(binary, "frobnicate").returncode == 2, "unknown subcommand exits 2")
+    check(run(binary, "run").returncode == 2, "missing scenario argument exits 2")
+    r = run(binary, "run", "/nonexistent/x.yaml")
+    check(r.returncode == 2 and "x.yaml" in r.stderr, "missing scenario file exits 2 naming it")
+    r = run(binary, "check", scenario, "--set", "material.density=-1")
+    check(r.returncode == 2 and "material.density" in r.stderr, "bad --set exits 2 naming the key")
+    r = run(binary, "check", scenario, "--set", "time.substeps=7", "-q")
+    check(r.returncode == 0 and "substeps: 7" in r.stdout, "--set shows in the resolved scenario")
+    r = run(binary, "check", scenario, "--set", "object.levels.0.mesh=missing.msh")
+    check(r.returncode == 2 and "missing.msh" in r.stderr, "check loads the meshes (exit 2)")
+
+
+def test_divergence(binary, scenario, tmp):
+    out = os.path.join(tmp, "diverged")
+    r = run(binary, "run", scenario, "-o", out, "--set", "time.substeps=4",
+            "--set", "time.duration=1.0", "--set", "material.damping.psi=0")
+    check(r.returncode == 1, "a run past the stability limit exits 1 (got %d)" % r.returncode)
+    check("diverged at frame" in r.stderr, "the message names the frame: " + r.stderr.strip()[-200:])
+    check("exceeds the stable estimate" in r.stderr, "a warning announced the unstable step")
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    check(summary["status"] == "diverged", "summary.json records the divergence")
+    with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
+        t = h5["/frames/time"][:]
+        e = h5["/frames/kinetic_energy"][:]
+    check(len(t) == summary["frames"] + 1 and np.all(np.isfinite(e)),
+          "log.h5 holds the %d finite frames before the divergence" % len(t))
+    times = pvd_times(out)
+    check(times == list(t), "frames.pvd lists exactly the frames before the divergence")
+    for k in range(len(times)):
+        check(os.path.exists(os.path.join(out, "frames", "frame_%06d.vtm" % k)), "frame %d kept" % k)
+
+
+def level0_arrays(vtm):
+    reader = vtkXMLMultiBlockDataReader()
+    reader.SetFileName(vtm)
+    reader.Update()
+    grid = reader.GetOutput().GetBlock(0)
+    pd = grid.GetPointData()
+    arrays = {pd.GetArrayName(i): vtk_to_numpy(pd.GetArray(i)) for i in range(pd.GetNumberOfArrays())}
+    arrays["points"] = vtk_to_numpy(grid.GetPoints().GetData())
+    return arrays
+
+
+def test_threads_bit_identical(binary, scenario, tmp):
+    env = dict(os.environ, MRSIM_PARALLEL_THRESHOLD="1")  # force the threaded path
+    outs = []
+    for threads in ("1", "2"):
+        out = os.path.join(tmp, "threads" + threads)
+        r = run(binary, "run", scenario, "-o", out, "-q", "--threads", threads,
+                "--set", "time.duration=0.1", env=env)
+        check(r.returncode == 0, "run with %s thread(s) succeeds" % threads)
+        outs.append(out)
+    with h5py.File(os.path.join(outs[0], "log.h5"), "r") as a, \
+            h5py.File(os.path.join(outs[1], "log.h5"), "r") as b:
+        names = []
+        a.visit(lambda n: names.append(n) if isinstance(a[n], h5py.Dataset) else None)
+        for n in names:
+            if n.endswith("wall_time"):
+                continue
+            same = a[n].shape == b[n].shape and a[n][()].tobytes() == b[n][()].tobytes()
+            check(same, "log.h5 /%s bit-identical for 1 and 2 threads" % n)
+    for k in (1, 5):
+        fa = level0_arrays(os.path.join(outs[0], "frames", "frame_%06d.vtm" % k))
+        fb = level0_arrays(os.path.join(outs[1], "frames", "frame_%06d.vtm" % k))
+        for name in fa:
+            check(fa[name].tobytes() == fb[name].tobytes(),
+                  "frame %d array %s bit-identical for 1 and 2 threads" % (k, name))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--binary", required=True)
+    ap.add_argument("--source", required=True)
+    ap.add_argument("--shared")
+    args = ap.parse_args()
+    if not os.path.exists(args.binary):
+        print("skipped: no binary at " + args.binary)
+        return 77
+    scenario = os.path.join(args.source, "scenarios", "beam.yaml")
+    with tempfile.TemporaryDirectory() as tmp:
+        test_exit_codes(args.binary, scenario)
+        test_divergence(args.binary, scenario, tmp)
+        test_threads_bit_identical(args.binary, scenario, tmp)
+    print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
+    return 1 if FAILURES else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
