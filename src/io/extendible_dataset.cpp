@@ -1,0 +1,97 @@
+#include "io/extendible_dataset.hpp"
+
+#include <algorithm>
+
+#include "io/hdf5_attributes.hpp"
+#include "io/hdf5_group.hpp"
+
+namespace mrsim::h5 {
+namespace {
+
+// Creation properties: chunked (required for an unlimited dimension), optionally deflated.
+Handle creation_properties(const ExtendibleSpec& spec, Where where) {
+  Handle properties = checked(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, where,
+                              "create dataset properties");
+  no_time_stamps(properties.get(), where);
+  std::vector<hsize_t> chunk{std::max<hsize_t>(spec.chunk_rows, 1)};
+  // A zero-sized trailing dimension (a level without points) still needs a chunk of >= 1.
+  for (const hsize_t n : spec.row_shape) chunk.push_back(std::max<hsize_t>(n, 1));
+  check(H5Pset_chunk(properties.get(), static_cast<int>(chunk.size()), chunk.data()), where,
+        "set chunk size");
+  if (spec.deflate_level > 0) {
+    check(H5Pset_deflate(properties.get(), static_cast<unsigned>(spec.deflate_level)), where,
+          "enable deflate compression");
+  }
+  return properties;
+}
+
+Handle empty_space(const ExtendibleSpec& spec, Where where) {
+  std::vector<hsize_t> dims{0};
+  std::vector<hsize_t> max_dims{H5S_UNLIMITED};
+  for (const hsize_t n : spec.row_shape) {
+    dims.push_back(n);
+    // Chunks may not exceed a fixed dimension, so an empty one is made unlimited instead.
+    max_dims.push_back(n == 0 ? H5S_UNLIMITED : n);
+  }
+  return checked(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max_dims.data()),
+                 H5Sclose, where, "create dataspace");
+}
+
+}  // namespace
+
+hsize_t chunk_rows_for(hsize_t row_bytes, hsize_t max_rows) {
+  constexpr hsize_t kTargetChunkBytes = 64 * 1024;
+  const hsize_t rows = kTargetChunkBytes / std::max<hsize_t>(row_bytes, 1);
+  return std::clamp<hsize_t>(rows, 1, std::max<hsize_t>(max_rows, 1));
+}
+
+ExtendibleDataset::ExtendibleDataset(hid_t parent, const std::string& parent_path,
+                                     const ExtendibleSpec& spec, const std::string& file)
+    : row_shape_(spec.row_shape),
+      path_(parent_path == "/" ? "/" + spec.name : parent_path + "/" + spec.name),
+      file_(file) {
+  Handle space = empty_space(spec, where());
+  Handle properties = creation_properties(spec, where());
+  dataset_ = checked(H5Dcreate2(parent, spec.name.c_str(), spec.file_type, space.get(),
+                                H5P_DEFAULT, properties.get(), H5P_DEFAULT),
+                     H5Dclose, where(), "create dataset");
+  if (!spec.units.empty()) set_string_attribute(dataset_.get(), "units", spec.units, where());
+  if (!spec.description.empty()) {
+    set_string_attribute(dataset_.get(), "description", spec.description, where());
+  }
+}
+
+hsize_t ExtendibleDataset::row_size() const {
+  hsize_t size = 1;
+  for (const hsize_t n : row_shape_) size *= n;
+  return size;
+}
+
+void ExtendibleDataset::append(const void* data, hid_t memory_type, hsize_t rows) {
+  if (rows == 0) return;
+  std::vector<hsize_t> extent{rows_ + rows};
+  extent.insert(extent.end(), row_shape_.begin(), row_shape_.end());
+  check(H5Dset_extent(dataset_.get(), extent.data()), where(), "extend dataset");
+  const hsize_t old_rows = rows_;
+  rows_ += rows;  // the extent is already grown; keep the count in step even if writing fails
+  if (row_size() == 0) return;  // nothing to write in rows of zero values
+
+  std::vector<hsize_t> start(extent.size(), 0);
+  start[0] = old_rows;
+  std::vector<hsize_t> count = extent;
+  count[0] = rows;
+  Handle file_space = checked(H5Dget_space(dataset_.get()), H5Sclose, where(), "get dataspace");
+  check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(),
+                            nullptr),
+        where(), "select new rows");
+  Handle memory_space = checked(H5Screate_simple(static_cast<int>(count.size()), count.data(),
+                                                 nullptr),
+                                H5Sclose, where(), "create memory dataspace");
+  check(H5Dwrite(dataset_.get(), memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT,
+                 data),
+        where(), "write rows");
+}
+
+void ExtendibleDataset::close() { check(dataset_.close(), where(), "close dataset"); }
+
+}  // namespace mrsim::h5

@@ -1,0 +1,69 @@
+#pragma once
+// A dataset that grows by whole rows along its first (unlimited) dimension: the building block
+// of every per-frame or per-event record in log.h5 (and of /tool/* later). Chunked, optionally
+// deflate-compressed; each append extends the extent and writes the new rows.
+#include <hdf5.h>
+
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "io/hdf5_handle.hpp"
+#include "io/hdf5_types.hpp"
+
+namespace mrsim::h5 {
+
+struct ExtendibleSpec {
+  std::string name;               // relative to the parent group
+  hid_t file_type = -1;           // not owned; must outlive the constructor call
+  std::vector<hsize_t> row_shape; // dimensions after the first; empty: one value per row
+  hsize_t chunk_rows = 1024;      // rows per chunk
+  int deflate_level = 0;          // 0: uncompressed, 1..9: zlib level
+  std::string units;              // stored as attribute `units` ("" = none)
+  std::string description;        // stored as attribute `description` ("" = none)
+};
+
+class ExtendibleDataset {
+ public:
+  ExtendibleDataset() = default;
+  /// Creates `spec.name` under `parent` with zero rows. `file` and `parent_path` only name
+  /// things in error messages.
+  ExtendibleDataset(hid_t parent, const std::string& parent_path, const ExtendibleSpec& spec,
+                    const std::string& file);
+
+  /// Appends `rows` rows read from `data` (row-major, `memory_type` elements).
+  void append(const void* data, hid_t memory_type, hsize_t rows);
+
+  /// Appends whole rows; `values.size()` must be a multiple of the row size.
+  template <class T>
+  void append(std::span<const T> values) {
+    const hsize_t per_row = row_size();
+    if (per_row == 0 ? !values.empty() : values.size() % per_row != 0) {
+      throw std::invalid_argument(path_ + ": " + std::to_string(values.size()) +
+                                  " values do not make whole rows of " + std::to_string(per_row));
+    }
+    append(values.data(), TypeOf<T>::memory(), per_row == 0 ? 1 : values.size() / per_row);
+  }
+
+  hsize_t rows() const { return rows_; }
+  hsize_t row_size() const;
+  hid_t id() const { return dataset_.get(); }
+  const std::string& path() const { return path_; }
+  /// Closes the dataset, reporting a failure (the destructor closes silently).
+  void close();
+
+ private:
+  Where where() const { return {file_, path_}; }
+  Handle dataset_;
+  std::vector<hsize_t> row_shape_;
+  hsize_t rows_ = 0;
+  std::string path_;  // full path in the file, for messages
+  std::string file_;
+};
+
+/// Chunk rows for rows of `row_bytes` bytes: about 64 KiB per chunk (at least 1 row, at most
+/// `max_rows`), large enough to compress well and small enough to rewrite at every flush.
+hsize_t chunk_rows_for(hsize_t row_bytes, hsize_t max_rows);
+
+}  // namespace mrsim::h5

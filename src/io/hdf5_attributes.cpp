@@ -1,0 +1,42 @@
+#include "io/hdf5_attributes.hpp"
+
+#include <string>
+
+#include "io/hdf5_types.hpp"
+
+namespace mrsim::h5 {
+namespace {
+
+// Opens `name` for overwriting when it exists (values such as counters are rewritten), else
+// creates it with `type` and a scalar dataspace.
+Handle scalar_attribute(hid_t object, const char* name, hid_t type, Where where) {
+  const htri_t exists = H5Aexists(object, name);
+  check(exists, where, std::string("look up attribute ") + name);
+  if (exists > 0) {
+    check(H5Adelete(object, name), where, std::string("replace attribute ") + name);
+  }
+  Handle space = checked(H5Screate(H5S_SCALAR), H5Sclose, where, "create scalar dataspace");
+  return checked(H5Acreate2(object, name, type, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+                 where, std::string("create attribute ") + name);
+}
+
+}  // namespace
+
+void set_string_attribute(hid_t object, const char* name, std::string_view value, Where where) {
+  Handle type = utf8_string_type(where);
+  Handle attribute = scalar_attribute(object, name, type.get(), where);
+  const std::string text(value);  // NUL-terminated copy
+  const char* pointer = text.c_str();
+  check(H5Awrite(attribute.get(), type.get(), &pointer), where,
+        std::string("write attribute ") + name);
+  check(attribute.close(), where, std::string("close attribute ") + name);
+}
+
+void set_int64_attribute(hid_t object, const char* name, std::int64_t value, Where where) {
+  Handle attribute = scalar_attribute(object, name, TypeOf<std::int64_t>::file(), where);
+  check(H5Awrite(attribute.get(), TypeOf<std::int64_t>::memory(), &value), where,
+        std::string("write attribute ") + name);
+  check(attribute.close(), where, std::string("close attribute ") + name);
+}
+
+}  // namespace mrsim::h5

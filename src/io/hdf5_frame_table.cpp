@@ -1,0 +1,81 @@
+#include "io/hdf5_frame_table.hpp"
+
+#include <cstdint>
+#include <span>
+
+#include "io/hdf5_group.hpp"
+
+namespace mrsim::h5 {
+namespace {
+
+constexpr hsize_t kScalarChunkRows = 1024;
+
+template <class T>
+ExtendibleSpec scalar_spec(const char* name, const char* units, const char* description) {
+  ExtendibleSpec spec;
+  spec.name = name;
+  spec.file_type = TypeOf<T>::file();
+  spec.chunk_rows = kScalarChunkRows;
+  spec.units = units;
+  spec.description = description;
+  return spec;
+}
+
+ExtendibleSpec per_level_spec(const char* name, std::size_t levels, const char* description) {
+  ExtendibleSpec spec;
+  spec.name = name;
+  spec.file_type = TypeOf<std::int64_t>::file();
+  spec.row_shape = {levels};
+  spec.chunk_rows = chunk_rows_for(levels * sizeof(std::int64_t), kScalarChunkRows);
+  spec.description = description;
+  return spec;
+}
+
+template <class T>
+void append_one(ExtendibleDataset& dataset, const T& value) {
+  dataset.append(std::span<const T>(&value, 1));
+}
+
+}  // namespace
+
+FrameTable::FrameTable(hid_t file_id, std::size_t levels, const std::string& file)
+    : file_(file), group_(create_group(file_id, "frames", {file_, "/frames"})) {
+  const hid_t g = group_.get();
+  time_ = {g, "/frames", scalar_spec<double>("time", "s", "simulated time of the frame"), file_};
+  kinetic_energy_ = {g, "/frames",
+                     scalar_spec<double>("kinetic_energy", "J", "sum of m v^2 / 2"), file_};
+  elastic_energy_ = {g, "/frames",
+                     scalar_spec<double>("elastic_energy", "J", "strain energy"), file_};
+  wall_time_ = {g, "/frames",
+                scalar_spec<double>("wall_time", "s", "wall clock spent simulating this frame"),
+                file_};
+  active_ = {g, "/frames", per_level_spec("active", levels, "active points per level"), file_};
+  ghosts_ = {g, "/frames", per_level_spec("ghosts", levels, "ghost points per level"), file_};
+  force_evaluations_ = {g, "/frames",
+                        per_level_spec("force_evaluations", levels,
+                                       "cumulative point-force evaluations per level"),
+                        file_};
+  frame_ = {g, "/frames",
+            scalar_spec<std::int32_t>("frame", "", "frame index (frame_NNNNNN.vtm)"), file_};
+}
+
+void FrameTable::append(const FrameRecord& record) {
+  append_one(time_, record.time);
+  append_one(kinetic_energy_, record.kinetic_energy);
+  append_one(elastic_energy_, record.elastic_energy);
+  append_one(wall_time_, record.wall_time);
+  active_.append(std::span<const std::int64_t>(record.active));
+  ghosts_.append(std::span<const std::int64_t>(record.ghosts));
+  force_evaluations_.append(std::span<const std::int64_t>(record.force_evaluations));
+  append_one(frame_, static_cast<std::int32_t>(record.frame));
+}
+
+void FrameTable::close() {
+  for (ExtendibleDataset* d : {&time_, &kinetic_energy_, &elastic_energy_, &wall_time_, &active_,
+                               &ghosts_, &force_evaluations_, &frame_}) {
+    d->close();
+  }
+  check(group_.close(), {file_, "/frames"}, "close group");
+}
+
+}  // namespace mrsim::h5

@@ -1,0 +1,30 @@
+#pragma once
+// /frames in log.h5: one row per written frame (time, energies, wall time, per-level counters).
+#include <hdf5.h>
+
+#include <string>
+
+#include "io/extendible_dataset.hpp"
+#include "io/frame_data.hpp"
+
+namespace mrsim::h5 {
+
+class FrameTable {
+ public:
+  FrameTable(hid_t file_id, std::size_t levels, const std::string& file);
+
+  /// Appends one row to every dataset; /frames/frame goes last, so its length counts the
+  /// frames whose every row was written (what a reader of a killed run should trust).
+  void append(const FrameRecord& record);
+  hsize_t rows() const { return frame_.rows(); }
+  void close();
+
+ private:
+  std::string file_;
+  Handle group_;
+  ExtendibleDataset time_, kinetic_energy_, elastic_energy_, wall_time_;
+  ExtendibleDataset active_, ghosts_, force_evaluations_;
+  ExtendibleDataset frame_;
+};
+
+}  // namespace mrsim::h5

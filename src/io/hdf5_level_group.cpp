@@ -1,0 +1,59 @@
+#include "io/hdf5_level_group.hpp"
+
+#include <vector>
+
+#include "io/hdf5_group.hpp"
+#include "io/hdf5_static_dataset.hpp"
+
+namespace mrsim::h5 {
+namespace {
+
+void write_rest_positions(hid_t group, const std::string& path, const TetMesh& mesh,
+                          const std::string& file) {
+  std::vector<double> xyz;
+  xyz.reserve(3 * mesh.points.size());
+  for (const Vec3& p : mesh.points) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  const std::string object = path + "/rest_positions";
+  write_static_dataset<double>(group, "rest_positions", xyz, {mesh.points.size(), 3}, "m",
+                               {file, object});
+}
+
+void write_tets(hid_t group, const std::string& path, const TetMesh& mesh,
+                const std::string& file) {
+  std::vector<std::int32_t> ids;
+  ids.reserve(4 * mesh.tets.size());
+  for (const Tet& t : mesh.tets) ids.insert(ids.end(), t.begin(), t.end());
+  const std::string object = path + "/tets";
+  write_static_dataset<std::int32_t>(group, "tets", ids, {mesh.tets.size(), 4}, "",
+                                     {file, object});
+}
+
+ExtendibleSpec status_spec(std::size_t points) {
+  ExtendibleSpec spec;
+  spec.name = "status";
+  spec.file_type = TypeOf<std::int8_t>::file();
+  spec.row_shape = {points};
+  // One byte per point: fine meshes get one row per chunk (written once, never rewritten);
+  // small ones group up to 16 frames per chunk so the chunks are not tiny.
+  spec.chunk_rows = chunk_rows_for(points, 16);
+  spec.deflate_level = 4;  // long runs of equal status compress very well
+  spec.description = "per frame and point: 0 inactive, 1 ghost, 2 active";
+  return spec;
+}
+
+}  // namespace
+
+LevelGroup::LevelGroup(hid_t levels_group, int level, const TetMesh& mesh, const std::string& file)
+    : path_("/levels/level_" + std::to_string(level)), file_(file), points_(mesh.points.size()) {
+  group_ = create_group(levels_group, "level_" + std::to_string(level), {file_, path_});
+  write_rest_positions(group_.get(), path_, mesh, file_);
+  write_tets(group_.get(), path_, mesh, file_);
+  status_ = ExtendibleDataset(group_.get(), path_, status_spec(points_), file_);
+}
+
+void LevelGroup::close() {
+  status_.close();
+  check(group_.close(), {file_, path_}, "close group");
+}
+
+}  // namespace mrsim::h5

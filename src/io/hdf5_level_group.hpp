@@ -1,0 +1,32 @@
+#pragma once
+// /levels/level_k in log.h5: the rest geometry of one level (written once) and its per-frame
+// point status (one row appended per frame).
+#include <hdf5.h>
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "io/extendible_dataset.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace mrsim::h5 {
+
+class LevelGroup {
+ public:
+  /// Creates level_`level` under the /levels group and writes rest_positions and tets.
+  LevelGroup(hid_t levels_group, int level, const TetMesh& mesh, const std::string& file);
+
+  std::size_t points() const { return points_; }
+  void append_status(std::span<const std::int8_t> status) { status_.append(status); }
+  void close();
+
+ private:
+  std::string path_;
+  std::string file_;
+  std::size_t points_ = 0;
+  Handle group_;
+  ExtendibleDataset status_;
+};
+
+}  // namespace mrsim::h5

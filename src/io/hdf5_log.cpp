@@ -1,0 +1,118 @@
+#include "io/hdf5_log.hpp"
+
+#include <exception>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "core/log.hpp"
+#include "io/frame_data_check.hpp"
+#include "io/hdf5_attributes.hpp"
+#include "io/hdf5_error.hpp"
+#include "io/hdf5_event_table.hpp"
+#include "io/hdf5_frame_table.hpp"
+#include "io/hdf5_group.hpp"
+#include "io/hdf5_level_group.hpp"
+
+namespace mrsim {
+
+namespace {
+
+// Bumped whenever the layout documented in docs/output.md changes incompatibly.
+constexpr std::int64_t kLogFormatVersion = 1;
+
+h5::Handle create_file(const std::string& file) {
+  h5::silence_automatic_error_printing();
+  // Default file-access properties on purpose: the oldest compatible format keeps no
+  // "open for writing" mark in the superblock, so the file of a killed run opens as is.
+  return h5::checked(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+                     {file, ""}, "create file");
+}
+
+void write_header_attributes(hid_t file_id, const Hdf5LogHeader& header, const std::string& file) {
+  const h5::Where root{file, "/"};
+  h5::set_string_attribute(file_id, "mrsim_version", header.version, root);
+  h5::set_string_attribute(file_id, "git_revision", header.git_revision, root);
+  h5::set_string_attribute(file_id, "scenario", header.scenario_yaml, root);
+  h5::set_string_attribute(file_id, "start_time", header.start_time, root);
+  h5::set_int64_attribute(file_id, "format_version", kLogFormatVersion, root);
+}
+
+}  // namespace
+
+struct Hdf5Log::Impl {
+  std::string file;
+  h5::Handle file_id;
+  h5::Handle levels_group;
+  std::vector<h5::LevelGroup> levels;
+  std::vector<std::size_t> points_per_level;
+  std::optional<h5::FrameTable> frames;
+  std::optional<h5::EventTable> events;
+
+  Impl(const std::filesystem::path& path, const Hdf5LogHeader& header)
+      : file(path.string()), file_id(create_file(file)) {
+    write_header_attributes(file_id.get(), header, file);
+    levels_group = h5::create_group(file_id.get(), "levels", {file, "/levels"});
+    h5::set_int64_attribute(levels_group.get(), "count",
+                            static_cast<std::int64_t>(header.levels.size()), {file, "/levels"});
+    for (std::size_t k = 0; k < header.levels.size(); ++k) {
+      if (header.levels[k] == nullptr) throw std::invalid_argument("Hdf5Log: level without mesh");
+      levels.emplace_back(levels_group.get(), static_cast<int>(k), *header.levels[k], file);
+      points_per_level.push_back(levels.back().points());
+    }
+    frames.emplace(file_id.get(), header.levels.size(), file);
+    events.emplace(file_id.get(), file);
+    flush();  // the header alone is already a valid, readable file
+  }
+
+  void flush() {
+    h5::check(H5Fflush(file_id.get(), H5F_SCOPE_GLOBAL), {file, ""}, "flush file");
+  }
+
+  // Children first: HDF5 keeps a file open while any object in it is open.
+  void close() {
+    events->close();
+    frames->close();
+    for (h5::LevelGroup& level : levels) level.close();
+    h5::check(levels_group.close(), {file, "/levels"}, "close group");
+    h5::check(file_id.close(), {file, ""}, "close file");
+  }
+};
+
+Hdf5Log::Hdf5Log(const std::filesystem::path& file, const Hdf5LogHeader& header)
+    : impl_(std::make_unique<Impl>(file, header)) {}
+
+Hdf5Log::~Hdf5Log() {
+  try {
+    close();
+  } catch (const std::exception& e) {
+    // A destructor must not throw; callers who care about the final close call close().
+    warn(e.what());
+  }
+}
+
+void Hdf5Log::append_frame(const FrameRecord& record) {
+  if (!impl_) throw std::logic_error("Hdf5Log::append_frame after close");
+  check_frame_record(record, impl_->points_per_level);
+  for (std::size_t k = 0; k < impl_->levels.size(); ++k) {
+    impl_->levels[k].append_status(record.status[k]);
+  }
+  impl_->events->write_pending();
+  impl_->frames->append(record);  // last: /frames/frame counts complete frames
+  impl_->flush();
+}
+
+void Hdf5Log::append_event(int frame, const std::string& kind, int level, long long point) {
+  if (!impl_) throw std::logic_error("Hdf5Log::append_event after close");
+  impl_->events->add(frame, kind, level, point);
+}
+
+void Hdf5Log::close() {
+  if (!impl_) return;
+  // Released before closing: a failed close must not be retried by the destructor on ids
+  // that are already half closed; the Handles still release whatever remains.
+  const std::unique_ptr<Impl> impl = std::move(impl_);
+  impl->close();
+}
+
+}  // namespace mrsim

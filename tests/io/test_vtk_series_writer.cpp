@@ -1,0 +1,262 @@
+// VtkSeriesWriter: frames/frame_NNNNNN.vtm + frames.pvd, read back with VTK's own readers.
+#include <vtkCellArray.h>
+#include <vtkCellType.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLMultiBlockDataReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "io/vtk_series_writer.hpp"
+#include "sample_frames.hpp"
+#include "temp_dir.hpp"
+
+namespace mrsim {
+namespace {
+
+using test::kSampleTimes;
+using test::SampleLevel;
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Every value of attribute `name` in `xml`, in order.
+std::vector<std::string> attribute_values(const std::string& xml, const std::string& name) {
+  const std::regex pattern(" " + name + "=\"([^\"]*)\"");
+  std::vector<std::string> values;
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), pattern);
+       it != std::sregex_iterator(); ++it) {
+    values.push_back((*it)[1].str());
+  }
+  return values;
+}
+
+void write_three_frames(const std::filesystem::path& dir) {
+  VtkSeriesWriter writer(dir);
+  for (int f = 0; f < 3; ++f) {
+    const auto levels = test::sample_frame(f);
+    const auto views = test::views_of(levels);
+    writer.write_frame(f, kSampleTimes[f], views);
+    EXPECT_EQ(writer.frames_written(), f + 1);
+  }
+}
+
+vtkSmartPointer<vtkMultiBlockDataSet> read_vtm(const std::filesystem::path& file) {
+  auto reader = vtkSmartPointer<vtkXMLMultiBlockDataReader>::New();
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  auto* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  return blocks;
+}
+
+void expect_vector_array(vtkPointData* data, const char* name, const std::vector<Vec3>& expected) {
+  vtkDataArray* array = data->GetArray(name);
+  ASSERT_NE(array, nullptr) << name;
+  EXPECT_EQ(array->GetDataType(), VTK_DOUBLE) << name;
+  ASSERT_EQ(array->GetNumberOfComponents(), 3) << name;
+  ASSERT_EQ(array->GetNumberOfTuples(), static_cast<vtkIdType>(expected.size())) << name;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_EQ(array->GetComponent(static_cast<vtkIdType>(i), c), expected[i][c])
+          << name << " point " << i << " component " << c;
+    }
+  }
+}
+
+template <class T>
+void expect_scalar_array(vtkPointData* data, const char* name, int vtk_type,
+                         const std::vector<T>& expected) {
+  vtkDataArray* array = data->GetArray(name);
+  ASSERT_NE(array, nullptr) << name;
+  EXPECT_EQ(array->GetDataType(), vtk_type) << name;
+  ASSERT_EQ(array->GetNumberOfComponents(), 1) << name;
+  ASSERT_EQ(array->GetNumberOfTuples(), static_cast<vtkIdType>(expected.size())) << name;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    ASSERT_EQ(array->GetComponent(static_cast<vtkIdType>(i), 0), static_cast<double>(expected[i]))
+        << name << " point " << i;
+  }
+}
+
+void expect_level_grid(vtkUnstructuredGrid* grid, const SampleLevel& level, double time) {
+  ASSERT_NE(grid, nullptr);
+  const std::size_t n = level.mesh.points.size();
+  ASSERT_EQ(grid->GetNumberOfPoints(), static_cast<vtkIdType>(n));
+  EXPECT_EQ(grid->GetPoints()->GetDataType(), VTK_DOUBLE);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 deformed = level.mesh.points[i] + level.displacement[i];
+    double p[3];
+    grid->GetPoint(static_cast<vtkIdType>(i), p);
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(p[c], deformed[c]) << "point " << i;
+  }
+  ASSERT_EQ(grid->GetNumberOfCells(), static_cast<vtkIdType>(level.mesh.tets.size()));
+  for (vtkIdType t = 0; t < grid->GetNumberOfCells(); ++t) {
+    ASSERT_EQ(grid->GetCellType(t), VTK_TETRA);
+    vtkIdType count = 0;
+    const vtkIdType* ids = nullptr;
+    grid->GetCellPoints(t, count, ids);
+    ASSERT_EQ(count, 4);
+    for (int c = 0; c < 4; ++c) ASSERT_EQ(ids[c], level.mesh.tets[t][c]) << "tet " << t;
+  }
+  vtkPointData* data = grid->GetPointData();
+  EXPECT_EQ(data->GetNumberOfArrays(), 7);
+  expect_vector_array(data, "displacement", level.displacement);
+  expect_vector_array(data, "velocity", level.velocity);
+  expect_vector_array(data, "force", level.force);
+  expect_scalar_array(data, "status", VTK_SIGNED_CHAR, level.status);
+  expect_scalar_array(data, "time_level", VTK_INT, level.time_level);
+  expect_scalar_array(data, "criterion", VTK_DOUBLE, level.criterion);
+  expect_scalar_array(data, "mass", VTK_DOUBLE, level.mass);
+  vtkDataArray* time_value = grid->GetFieldData()->GetArray("TimeValue");
+  ASSERT_NE(time_value, nullptr);
+  EXPECT_EQ(time_value->GetComponent(0, 0), time);
+}
+
+TEST(VtkSeriesWriter, WritesOneMultiblockPerFrameWithNamedLevelBlocks) {
+  test::TempDir dir;
+  write_three_frames(dir.path());
+  for (int f = 0; f < 3; ++f) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%06d.vtm", f);
+    const auto file = dir.path() / "frames" / name;
+    ASSERT_TRUE(std::filesystem::exists(file)) << file;
+    auto blocks = read_vtm(file);
+    ASSERT_NE(blocks, nullptr);
+    ASSERT_EQ(blocks->GetNumberOfBlocks(), 2u);
+    const auto expected = test::sample_frame(f);
+    for (unsigned k = 0; k < 2; ++k) {
+      ASSERT_TRUE(blocks->HasMetaData(k));
+      EXPECT_STREQ(blocks->GetMetaData(k)->Get(vtkCompositeDataSet::NAME()),
+                   ("level_" + std::to_string(k)).c_str());
+      expect_level_grid(vtkUnstructuredGrid::SafeDownCast(blocks->GetBlock(k)), expected[k],
+                        kSampleTimes[f]);
+    }
+  }
+}
+
+TEST(VtkSeriesWriter, PiecesAreZlibCompressedBinaryAndReadableAlone) {
+  test::TempDir dir;
+  write_three_frames(dir.path());
+  const auto vtm = dir.path() / "frames" / "frame_000002.vtm";
+  const auto pieces = attribute_values(read_text(vtm), "file");
+  ASSERT_EQ(pieces.size(), 2u);
+  const auto expected = test::sample_frame(2);
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const auto piece = vtm.parent_path() / pieces[k];
+    const std::string xml = read_text(piece);
+    EXPECT_NE(xml.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos) << piece;
+    EXPECT_NE(xml.find("format=\"appended\""), std::string::npos) << piece;
+    EXPECT_NE(xml.find("type=\"Int8\" Name=\"status\""), std::string::npos) << piece;
+    auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    reader->SetFileName(piece.c_str());
+    reader->Update();
+    expect_level_grid(reader->GetOutput(), expected[k], kSampleTimes[2]);
+  }
+}
+
+TEST(VtkSeriesWriter, PvdListsEveryFrameWithExactTimes) {
+  test::TempDir dir;
+  write_three_frames(dir.path());
+  const std::string pvd = read_text(dir.path() / "frames.pvd");
+  EXPECT_NE(pvd.find("type=\"Collection\""), std::string::npos);
+  const auto times = attribute_values(pvd, "timestep");
+  const auto files = attribute_values(pvd, "file");
+  ASSERT_EQ(times.size(), 3u);
+  ASSERT_EQ(files.size(), 3u);
+  for (int f = 0; f < 3; ++f) {
+    EXPECT_EQ(std::strtod(times[f].c_str(), nullptr), kSampleTimes[f]) << times[f];
+    char name[40];
+    std::snprintf(name, sizeof name, "frames/frame_%06d.vtm", f);
+    EXPECT_EQ(files[f], name);
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "frames.pvd.tmp"));
+}
+
+TEST(VtkSeriesWriter, PvdIsValidAfterEveryFrame) {
+  test::TempDir dir;
+  VtkSeriesWriter writer(dir.path());
+  for (int f = 0; f < 3; ++f) {
+    const auto levels = test::sample_frame(f);
+    writer.write_frame(f, kSampleTimes[f], test::views_of(levels));
+    // What a run killed right now would leave: a complete collection of the frames so far.
+    const std::string pvd = read_text(dir.path() / "frames.pvd");
+    EXPECT_EQ(attribute_values(pvd, "timestep").size(), static_cast<std::size_t>(f + 1));
+    EXPECT_NE(pvd.find("</VTKFile>"), std::string::npos);
+  }
+}
+
+TEST(VtkSeriesWriter, UnusableOutputFolderThrowsRunErrorNamingIt) {
+  test::TempDir dir;
+  // A regular file where a folder is expected fails even for root (permissions would not).
+  const auto blocker = dir.path() / "not_a_folder";
+  std::ofstream(blocker) << "x";
+  try {
+    VtkSeriesWriter writer(blocker / "out");
+    FAIL() << "expected RunError";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("not_a_folder"), std::string::npos) << e.what();
+  }
+}
+
+TEST(VtkSeriesWriter, FrameWriteFailureThrowsRunErrorNamingTheFile) {
+  test::TempDir dir;
+  VtkSeriesWriter writer(dir.path());
+  // The frames folder disappears under the run and a file takes its place.
+  std::filesystem::remove_all(dir.path() / "frames");
+  std::ofstream(dir.path() / "frames") << "x";
+  const auto levels = test::sample_frame(0);
+  try {
+    writer.write_frame(0, 0.0, test::views_of(levels));
+    FAIL() << "expected RunError";
+  } catch (const RunError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("frame_000000.vtm"), std::string::npos) << message;
+    // VTK's own diagnosis is carried over, without its source-file noise.
+    EXPECT_NE(message.find("Not a directory"), std::string::npos) << message;
+    EXPECT_EQ(message.find("0x"), std::string::npos) << message;
+  }
+  EXPECT_EQ(writer.frames_written(), 0);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "frames.pvd"));
+}
+
+TEST(VtkSeriesWriter, PvdWriteFailureThrowsRunError) {
+  test::TempDir dir;
+  VtkSeriesWriter writer(dir.path());
+  std::filesystem::create_directories(dir.path() / "frames.pvd.tmp");  // cannot be opened as a file
+  const auto levels = test::sample_frame(0);
+  EXPECT_THROW(writer.write_frame(0, 0.0, test::views_of(levels)), RunError);
+}
+
+TEST(VtkSeriesWriter, RejectsArraysOfTheWrongSize) {
+  test::TempDir dir;
+  VtkSeriesWriter writer(dir.path());
+  auto levels = test::sample_frame(0);
+  levels[1].mass.pop_back();
+  try {
+    writer.write_frame(0, 0.0, test::views_of(levels));
+    FAIL() << "expected invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("level_1: mass"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace mrsim
