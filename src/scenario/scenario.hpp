@@ -71,7 +71,7 @@ struct Scenario {
   InitialSpec initial;
   TimeSpec time;
   OutputSpec output;
-  nlohmann::json resolved;  // the validated document with every default explicit
+  nlohmann::json resolved;  // the validated document, every default explicit, material.derived
 };
 
 /// Reads a YAML scenario, applies `--set key.path=value` overrides, validates against

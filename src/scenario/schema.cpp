@@ -1,0 +1,99 @@
+#include "scenario/schema.hpp"
+
+#include <algorithm>
+#include <charconv>
+
+#include "scenario/json_path.hpp"
+
+namespace mrsim::scenario {
+
+namespace {
+
+using nlohmann::json;
+
+// The order of properties is only kept by nlohmann::ordered_json.
+void collect_order(const nlohmann::ordered_json& node, std::vector<std::string>& order) {
+  if (!node.is_object()) return;
+  if (auto it = node.find("properties"); it != node.end() && it->is_object()) {
+    for (const auto& [key, child] : it->items()) {
+      if (std::find(order.begin(), order.end(), key) == order.end()) order.push_back(key);
+      collect_order(child, order);
+    }
+  }
+  if (auto it = node.find("items"); it != node.end()) collect_order(*it, order);
+}
+
+void collect_paths(const json& node, const std::string& prefix, std::vector<std::string>& paths) {
+  const json& resolved = resolve_ref(node);
+  if (!resolved.is_object()) return;
+  if (auto it = resolved.find("properties"); it != resolved.end()) {
+    for (const auto& [key, child] : it->items()) {
+      const std::string path = prefix.empty() ? key : prefix + "." + key;
+      paths.push_back(path);
+      collect_paths(child, path, paths);
+    }
+  }
+  if (auto it = resolved.find("items"); it != resolved.end())
+    collect_paths(*it, prefix.empty() ? "N" : prefix + ".N", paths);
+}
+
+}  // namespace
+
+const json& scenario_schema() {
+  static const json schema = json::parse(embedded_schema_text());
+  return schema;
+}
+
+const json& resolve_ref(const json& node) {
+  const json* current = &node;
+  // A bounded loop: a chain of references longer than this would be a broken schema.
+  for (int hops = 0; hops < 8 && current->is_object() && current->contains("$ref"); ++hops) {
+    const auto ref = (*current)["$ref"].get<std::string>();
+    if (ref.rfind("#", 0) != 0) break;
+    current = &scenario_schema().at(json::json_pointer(ref.substr(1)));
+  }
+  return *current;
+}
+
+const json* schema_at(const std::string& pointer, const json& document) {
+  const json* node = &scenario_schema();
+  const json* value = &document;
+  for (const auto& token : pointer_tokens(pointer)) {
+    const json& resolved = resolve_ref(*node);
+    if (value->is_array() && resolved.contains("items")) {
+      std::size_t index = 0;
+      const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), index);
+      if (error != std::errc{} || end != token.data() + token.size() || index >= value->size())
+        return nullptr;
+      node = &resolved["items"];
+      value = &(*value)[index];
+    } else if (value->is_object() && resolved.contains("properties") &&
+               resolved["properties"].contains(token)) {
+      node = &resolved["properties"][token];
+      value = &value->at(token);
+    } else {
+      return nullptr;
+    }
+  }
+  return node;
+}
+
+const std::vector<std::string>& property_order() {
+  static const std::vector<std::string> order = [] {
+    std::vector<std::string> keys;
+    collect_order(nlohmann::ordered_json::parse(embedded_schema_text()), keys);
+    return keys;
+  }();
+  return order;
+}
+
+const std::vector<std::string>& property_paths() {
+  static const std::vector<std::string> paths = [] {
+    std::vector<std::string> all;
+    collect_paths(scenario_schema(), "", all);
+    return all;
+  }();
+  return paths;
+}
+
+}  // namespace mrsim::scenario

@@ -1,0 +1,105 @@
+#include "scenario/schema_validator.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <memory>
+#include <optional>
+#include <string>
+#include <valijson/adapters/nlohmann_json_adapter.hpp>
+#include <valijson/schema.hpp>
+#include <valijson/schema_parser.hpp>
+#include <valijson/validation_results.hpp>
+#include <valijson/validator.hpp>
+
+#include "scenario/json_path.hpp"
+#include "scenario/schema.hpp"
+#include "scenario/violation_message.hpp"
+
+namespace mrsim::scenario {
+
+namespace {
+
+using nlohmann::json;
+
+const valijson::Schema& compiled_schema() {
+  // valijson schemas are built in place and not copyable; build once, keep for the process.
+  static const std::unique_ptr<valijson::Schema> schema = [] {
+    auto built = std::make_unique<valijson::Schema>();
+    valijson::SchemaParser parser(valijson::SchemaParser::kDraft7);
+    valijson::adapters::NlohmannJsonAdapter adapter(scenario_schema());
+    parser.populateSchema(adapter, *built);
+    return built;
+  }();
+  return *schema;
+}
+
+std::optional<std::size_t> parse_index(const std::string& token, std::size_t size) {
+  std::size_t index = 0;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), index);
+  if (error != std::errc{} || end != token.data() + token.size() || index >= size)
+    return std::nullopt;
+  return index;
+}
+
+// valijson names a place as {"<root>", "[material]", "[lambda]"}; items are "[0]" too, so the
+// document tells whether a token is an index or a key.
+std::string context_pointer(const std::vector<std::string>& context, const json& document) {
+  std::string pointer;
+  const json* value = &document;
+  for (const auto& part : context) {
+    if (part.size() < 2 || part.front() != '[' || part.back() != ']') continue;
+    const std::string token = part.substr(1, part.size() - 2);
+    if (value->is_array()) {
+      const auto index = parse_index(token, value->size());
+      if (!index) break;
+      pointer = child_pointer(pointer, *index);
+      value = &(*value)[*index];
+    } else if (value->is_object() && value->contains(token)) {
+      pointer = child_pointer(pointer, token);
+      value = &(*value)[token];
+    } else {
+      break;
+    }
+  }
+  return pointer;
+}
+
+// valijson's own texts, without the "Failed to validate ... child/property/item" echoes of
+// a nested failure: the last resort when no rebuilt message applies.
+std::vector<Issue> raw_issues(const valijson::ValidationResults& results, const json& document) {
+  std::vector<Issue> issues;
+  for (const auto& error : results)
+    if (error.description.rfind("Failed to validate", 0) != 0)
+      issues.push_back({context_pointer(error.context, document), error.description});
+  if (issues.empty()) issues.push_back({"", "does not match the scenario schema"});
+  return issues;
+}
+
+}  // namespace
+
+std::vector<Issue> schema_issues(const json& document) {
+  valijson::Validator validator;
+  valijson::ValidationResults results;
+  valijson::adapters::NlohmannJsonAdapter adapter(document);
+  if (validator.validate(compiled_schema(), adapter, &results)) return {};
+  std::vector<std::string> flagged;
+  for (const auto& error : results) {
+    auto pointer = context_pointer(error.context, document);
+    if (std::find(flagged.begin(), flagged.end(), pointer) == flagged.end())
+      flagged.push_back(std::move(pointer));
+  }
+  std::vector<Issue> issues;
+  for (const auto& pointer : flagged) {
+    const json* node = schema_at(pointer, document);
+    if (!node) continue;
+    auto found = describe_violations(document.at(json::json_pointer(pointer)), *node, pointer);
+    issues.insert(issues.end(), found.begin(), found.end());
+  }
+  return issues.empty() ? raw_issues(results, document) : issues;
+}
+
+void validate_against_schema(const json& document, const SourceMap& positions) {
+  throw_if_any(positions, schema_issues(document));
+}
+
+}  // namespace mrsim::scenario

@@ -1,0 +1,78 @@
+#include "scenario/semantic_checks.hpp"
+
+#include <cmath>
+
+#include "scenario/issues.hpp"
+#include "scenario/json_path.hpp"
+
+namespace mrsim::scenario {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kAxes[] = {"x", "y", "z"};
+
+void check_box(const json& box, const std::string& pointer, std::vector<Issue>& issues) {
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    const double lo = box["min"][axis].get<double>(), hi = box["max"][axis].get<double>();
+    if (lo > hi)
+      issues.push_back({pointer, std::string("min must be <= max on every axis (") + kAxes[axis] +
+                                     ": " + box["min"][axis].dump() + " > " +
+                                     box["max"][axis].dump() + ")"});
+  }
+}
+
+void check_half_space(const json& half_space, const std::string& pointer,
+                      std::vector<Issue>& issues) {
+  const json& n = half_space["normal"];
+  if (n[0].get<double>() == 0 && n[1].get<double>() == 0 && n[2].get<double>() == 0)
+    issues.push_back({child_pointer(pointer, "normal"), "must not be zero (it orients the plane)"});
+}
+
+void check_fixed(const json& document, std::vector<Issue>& issues) {
+  const std::size_t levels = document["object"]["levels"].size();
+  const json& fixed = document["fixed"];
+  for (std::size_t i = 0; i < fixed.size(); ++i) {
+    const std::string pointer = child_pointer("/fixed", i);
+    const json& region = fixed[i];
+    if (region.contains("box")) check_box(region["box"], child_pointer(pointer, "box"), issues);
+    if (region.contains("half_space"))
+      check_half_space(region["half_space"], child_pointer(pointer, "half_space"), issues);
+    if (region.contains("level") && region["level"].get<std::size_t>() >= levels)
+      issues.push_back({child_pointer(pointer, "level"),
+                        "no level " + region["level"].dump() + " (object.levels has " +
+                            std::to_string(levels) + (levels == 1 ? " level)" : " levels)")});
+  }
+}
+
+void check_time(const json& time, std::vector<Issue>& issues) {
+  if (time["duration"].get<double>() < time["frame_dt"].get<double>())
+    issues.push_back({"/time/duration", "must be >= time.frame_dt (" + time["duration"].dump() +
+                                            " < " + time["frame_dt"].dump() + ")"});
+}
+
+void check_material(const json& material, std::vector<Issue>& issues) {
+  for (const auto& [key, value] : material["derived"].items())
+    if (!std::isfinite(value.get<double>()))
+      issues.push_back({"/material", "the elastic constants give a non-finite " + key});
+}
+
+// The name becomes the folder out/<name>: "." and ".." would point elsewhere.
+void check_name(const json& name, std::vector<Issue>& issues) {
+  if (name == "." || name == "..")
+    issues.push_back({"/name", "must not be '.' or '..' (it names the output folder out/<name>)"});
+}
+
+}  // namespace
+
+void check_semantics(const json& document, const SourceMap& positions) {
+  std::vector<Issue> issues;
+  check_name(document["name"], issues);
+  check_fixed(document, issues);
+  check_time(document["time"], issues);
+  check_material(document["material"], issues);
+  throw_if_any(positions, issues);
+}
+
+}  // namespace mrsim::scenario

@@ -1,0 +1,78 @@
+// Schema validation messages: key paths, line:column, did-you-mean, several problems at once.
+#include "scenario/schema_validator.hpp"
+
+#include <gtest/gtest.h>
+
+#include "scenario/schema.hpp"
+#include "scenario/yaml_to_json.hpp"
+#include "test_support.hpp"
+
+namespace mrsim::scenario {
+namespace {
+
+using nlohmann::json;
+
+void validate_text(const std::string& yaml) {
+  const auto doc = yaml_to_json(yaml, {"s.yaml", true, 0});
+  validate_against_schema(doc.value, doc.positions);
+}
+
+const std::string kHead =
+    "name: t\n"
+    "object:\n"
+    "  levels:\n"
+    "    - mesh: a.vtu\n";
+
+TEST(SchemaValidator, MinimalDocumentIsValid) {
+  EXPECT_NO_THROW(validate_text(kHead + "material: {lambda: 1, mu: 1}\n"));
+  EXPECT_NO_THROW(validate_text(kHead + "material: {youngs_modulus: 1, poisson_ratio: 0}\n"));
+}
+
+TEST(SchemaValidator, MessagesNameFileLineColumnAndKeyPath) {
+  EXPECT_INPUT_ERROR(validate_text(kHead + "material:\n  mu: 1\n  lambda: -5\n"),
+                     "s.yaml:7:3: material.lambda: must be >= 0 (got -5)");
+  EXPECT_INPUT_ERROR(validate_text(kHead + "material: {lambda: 1, mu: 1}\noutput:\n  evry: 2\n"),
+                     "s.yaml:7:3: output.evry: unknown key; did you mean 'every'?");
+  EXPECT_INPUT_ERROR(validate_text(kHead + "material: {lambda: 1, mu: 1}\ntime: {frame_dt: 0}\n"),
+                     "s.yaml:6:8: time.frame_dt: must be > 0 (got 0)");
+}
+
+TEST(SchemaValidator, UnknownKeyWithoutCloseMatchListsTheKnownKeys) {
+  EXPECT_INPUT_ERROR(validate_text(kHead + "material: {lambda: 1, mu: 1}\noutput: {zzz: 1}\n"),
+                     "output.zzz: unknown key; expected one of: dir, every, vtk");
+}
+
+TEST(SchemaValidator, AllProblemsAreReportedInSourceOrder) {
+  const std::string message = test::input_error_of(
+      [] { validate_text(kHead + "material: {lambda: 1, mu: 1, density: 0}\ngravity: [0, 0]\n"); });
+  const auto density = message.find("material.density: must be > 0");
+  const auto gravity = message.find("gravity: must have exactly 3 items");
+  ASSERT_NE(density, std::string::npos) << message;
+  ASSERT_NE(gravity, std::string::npos) << message;
+  EXPECT_LT(density, gravity);
+}
+
+TEST(SchemaValidator, ResolvedDocumentWithDerivedConstantsIsValid) {
+  json doc = yaml_to_json(kHead + "material: {lambda: 1, mu: 1}\n", {"s", true, 0}).value;
+  doc["material"]["derived"] = {
+      {"lambda", 1}, {"mu", 1}, {"youngs_modulus", 2.5}, {"poisson_ratio", 0.25}};
+  EXPECT_TRUE(schema_issues(doc).empty());
+}
+
+TEST(Schema, EmbeddedSchemaIsTheSourceFile) {
+  std::ifstream in(test::source_dir() / "schemas/scenario.schema.json");
+  const json on_disk = json::parse(in);
+  EXPECT_EQ(scenario_schema(), on_disk);  // a stale build would embed an older schema
+}
+
+TEST(Schema, PropertyOrderFollowsTheSchemaFile) {
+  const auto& order = property_order();
+  auto at = [&](const std::string& k) { return std::find(order.begin(), order.end(), k); };
+  EXPECT_EQ(order.front(), "name");
+  EXPECT_LT(at("object"), at("material"));
+  EXPECT_LT(at("lambda"), at("mu"));
+  EXPECT_LT(at("time"), at("output"));
+}
+
+}  // namespace
+}  // namespace mrsim::scenario
