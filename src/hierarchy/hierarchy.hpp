@@ -1,0 +1,65 @@
+#pragma once
+// Dynamic statuses of the points of every level (method.md §4.2, §4.4–4.7): which points are
+// simulated (active), which copy their displacement from another level (ghosts), which are
+// ignored (inactive). Statuses are derived from per-point counters, never stored, so split and
+// merge are exact inverses. Purely combinatorial: the dynamics read it (simulation/).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hierarchy/level_links.hpp"
+
+namespace mrsim {
+
+enum class NodeState : std::int8_t {
+  Inactive,    // not simulated, not needed
+  Active,      // computes its force and integrates
+  GhostSub,    // subdivided: interpolates from its child tet (finer level)
+  GhostIface,  // interface ghost: interpolates from its parent tet (coarser level)
+};
+
+class Hierarchy {
+ public:
+  /// Initial state: every level-0 point active, nothing else.
+  Hierarchy(std::vector<HierarchyLevel> levels, std::vector<LevelLinks> links);
+
+  int num_levels() const { return static_cast<int>(levels_.size()); }
+  int num_points(int level) const { return static_cast<int>(flags_[level].subdivided.size()); }
+  NodeState state(int level, int point) const;
+  bool subdivided(int level, int point) const { return flags_[level].subdivided[point] != 0; }
+  const LevelLinks& links(int level) const { return links_[level]; }
+  const HierarchyLevel& level(int l) const { return levels_[l]; }
+
+  /// Split preconditions of §4.4 (active, not finest, has children).
+  bool can_split(int level, int point) const;
+  /// Merge preconditions of §4.5 (subdivided, no member of its active set subdivided).
+  bool can_merge(int level, int point) const;
+  /// Returns the finer points that were inactive and are now simulated or ghosts (they need
+  /// their displacement initialised by interpolation).
+  std::vector<std::pair<int, int>> split(int level, int point);
+  void merge(int level, int point);
+  /// §4.7: recompute which inactive points are needed as interpolation sources; returns how
+  /// many support points were released.
+  int collect_garbage();
+
+  /// I1–I5 of §4.9; empty when every invariant holds.
+  std::vector<std::string> check_invariants() const;
+
+  std::int64_t count(int level, NodeState s) const;
+
+ private:
+  struct Flags {
+    std::vector<std::uint8_t> subdivided, support;
+    std::vector<int> active_ref, ghost_ref;
+  };
+  void ensure_resolvable(int level, int ghost, std::vector<std::pair<int, int>>* woken);
+  void check_point(int l, int p, std::vector<std::string>& out) const;
+
+  std::vector<HierarchyLevel> levels_;
+  std::vector<LevelLinks> links_;
+  std::vector<Flags> flags_;
+};
+
+const char* node_state_name(NodeState s);
+
+}  // namespace mrsim

@@ -1,0 +1,127 @@
+#include "hierarchy/tet_locator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "hierarchy/closest_point.hpp"
+
+namespace mrsim {
+
+namespace {
+constexpr double kInsideTolerance = 1e-12;  // barycentric slack for points on faces
+constexpr int kMaxCells = 1 << 24;
+}  // namespace
+
+TetLocator::TetLocator(const TetMesh& mesh) : mesh_(mesh) {
+  const size_t nt = mesh.tets.size();
+  inverse_.resize(nt);
+  Vec3 lo = mesh.points.front(), hi = lo;
+  for (const Vec3& p : mesh.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  for (size_t t = 0; t < nt; ++t) {
+    const Tet& v = mesh.tets[t];
+    Mat3 D;
+    for (int k = 0; k < 3; ++k) D.col(k) = mesh.points[v[k + 1]] - mesh.points[v[0]];
+    inverse_[t] = D.inverse();
+  }
+  // About one tet per cell: h³ ≈ bbox volume / T, capped so the grid stays bounded.
+  const Vec3 ext = (hi - lo).cwiseMax(1e-12);
+  h_ = std::cbrt(ext.prod() / std::max<size_t>(nt, 1));
+  h_ = std::max(h_, ext.maxCoeff() / 1024.0);
+  while (static_cast<double>(std::ceil(ext.x() / h_) * std::ceil(ext.y() / h_) *
+                             std::ceil(ext.z() / h_)) > kMaxCells)
+    h_ *= 1.25;
+  lo_ = lo;
+  for (int k = 0; k < 3; ++k) dims_[k] = std::max(1, static_cast<int>(std::ceil(ext[k] / h_)));
+  // Two passes (count, fill) into CSR: tets in every cell their bounding box overlaps.
+  const int ncells = dims_[0] * dims_[1] * dims_[2];
+  cell_start_.assign(ncells + 1, 0);
+  auto for_cells = [&](size_t t, auto&& fn) {
+    Vec3 a = mesh.points[mesh.tets[t][0]], b = a;
+    for (int v : mesh.tets[t]) {
+      a = a.cwiseMin(mesh.points[v]);
+      b = b.cwiseMax(mesh.points[v]);
+    }
+    const auto ca = cell_of(a), cb = cell_of(b);
+    for (int k = ca[2]; k <= cb[2]; ++k)
+      for (int j = ca[1]; j <= cb[1]; ++j)
+        for (int i = ca[0]; i <= cb[0]; ++i) fn(cell_index(i, j, k));
+  };
+  for (size_t t = 0; t < nt; ++t) for_cells(t, [&](int c) { ++cell_start_[c + 1]; });
+  for (int c = 0; c < ncells; ++c) cell_start_[c + 1] += cell_start_[c];
+  cell_tets_.resize(cell_start_[ncells]);
+  std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
+  for (size_t t = 0; t < nt; ++t)
+    for_cells(t, [&](int c) { cell_tets_[fill[c]++] = static_cast<int>(t); });
+}
+
+std::array<int, 3> TetLocator::cell_of(const Vec3& p) const {
+  std::array<int, 3> c;
+  for (int k = 0; k < 3; ++k)
+    c[k] = std::clamp(static_cast<int>(std::floor((p[k] - lo_[k]) / h_)), 0, dims_[k] - 1);
+  return c;
+}
+
+std::array<double, 4> TetLocator::barycentric(int t, const Vec3& p) const {
+  const Vec3 b = inverse_[t] * (p - mesh_.points[mesh_.tets[t][0]]);
+  return {1.0 - b.sum(), b.x(), b.y(), b.z()};
+}
+
+double TetLocator::distance_to_tet(int t, const Vec3& p) const {
+  const auto b = barycentric(t, p);
+  if (*std::min_element(b.begin(), b.end()) >= -kInsideTolerance) return 0;
+  static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  const Tet& v = mesh_.tets[t];
+  double d = std::numeric_limits<double>::infinity();
+  for (const auto& f : kFaces) {
+    const Vec3 q = closest_point_on_triangle(p, mesh_.points[v[f[0]]], mesh_.points[v[f[1]]],
+                                             mesh_.points[v[f[2]]]);
+    d = std::min(d, (p - q).norm());
+  }
+  return d;
+}
+
+// Best = smallest distance; among containing tets (distance 0), the largest minimum
+// barycentric coordinate; ties broken by the lowest tet index (candidates come in any order).
+void TetLocator::consider(int t, const Vec3& p, TetLocation& best, double& best_key) const {
+  const double d = distance_to_tet(t, p);
+  const auto b = barycentric(t, p);
+  const double key = d > 0 ? d : -*std::min_element(b.begin(), b.end());
+  if (best.tet < 0 || key < best_key || (key == best_key && t < best.tet)) {
+    best.tet = t;
+    best.bary = b;
+    best.distance = d;
+    best_key = key;
+  }
+}
+
+TetLocation TetLocator::locate(const Vec3& p) const {
+  TetLocation best;
+  double best_key = 0;
+  const auto c = cell_of(p);
+  for (int s = cell_start_[cell_index(c[0], c[1], c[2])];
+       s < cell_start_[cell_index(c[0], c[1], c[2]) + 1]; ++s)
+    consider(cell_tets_[s], p, best, best_key);
+  if (best.tet >= 0 && best.distance == 0) return best;
+  // Outside every tet of the cell: search rings of cells until no closer tet can exist.
+  const int max_ring = std::max({dims_[0], dims_[1], dims_[2]});
+  for (int r = 1; r <= max_ring; ++r) {
+    for (int k = c[2] - r; k <= c[2] + r; ++k)
+      for (int j = c[1] - r; j <= c[1] + r; ++j)
+        for (int i = c[0] - r; i <= c[0] + r; ++i) {
+          if (std::max({std::abs(i - c[0]), std::abs(j - c[1]), std::abs(k - c[2])}) != r) continue;
+          if (i < 0 || j < 0 || k < 0 || i >= dims_[0] || j >= dims_[1] || k >= dims_[2]) continue;
+          const int cell = cell_index(i, j, k);
+          for (int s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s)
+            consider(cell_tets_[s], p, best, best_key);
+        }
+    // Every tet not yet seen lies in cells at least r·h away from p's cell.
+    if (best.tet >= 0 && best.distance <= r * h_) break;
+  }
+  return best;
+}
+
+}  // namespace mrsim

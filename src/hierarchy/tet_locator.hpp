@@ -1,0 +1,42 @@
+#pragma once
+// Point location in a tet mesh (method.md §4.3 step 1): the tet that contains a point, with its
+// barycentric coordinates, or — for points outside the mesh, near the boundary of independent
+// meshes of one object — the nearest tet with signed coordinates (one or more negative), so
+// that ghost interpolation extrapolates (§4.1 point 6). Uniform grid over tet bounding boxes:
+// O(T) to build, O(1) expected per query.
+#include <array>
+#include <vector>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace mrsim {
+
+struct TetLocation {
+  int tet = -1;
+  std::array<double, 4> bary{};  // Σ = 1; all ≥ 0 (up to rounding) when inside
+  double distance = 0;           // m, 0 when inside
+  bool inside() const { return distance == 0; }
+};
+
+class TetLocator {
+ public:
+  explicit TetLocator(const TetMesh& mesh);
+  TetLocation locate(const Vec3& p) const;
+  /// Barycentric coordinates of p in tet t (signed).
+  std::array<double, 4> barycentric(int t, const Vec3& p) const;
+
+ private:
+  int cell_index(int i, int j, int k) const { return i + dims_[0] * (j + dims_[1] * k); }
+  std::array<int, 3> cell_of(const Vec3& p) const;
+  double distance_to_tet(int t, const Vec3& p) const;
+  void consider(int t, const Vec3& p, TetLocation& best, double& best_key) const;
+
+  const TetMesh& mesh_;
+  std::vector<Mat3> inverse_;  // D_t^{-1}, for barycentrics
+  Vec3 lo_;
+  double h_ = 1;
+  std::array<int, 3> dims_{1, 1, 1};
+  std::vector<int> cell_start_, cell_tets_;
+};
+
+}  // namespace mrsim

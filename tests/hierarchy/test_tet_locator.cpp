@@ -1,0 +1,78 @@
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <random>
+
+#include "hierarchy/closest_point.hpp"
+#include "hierarchy/tet_locator.hpp"
+#include "mesh/box_mesh.hpp"
+
+using namespace mrsim;
+
+namespace {
+
+TetMesh jittered_box() {
+  TetMesh m = make_box_mesh(Vec3(0, 0, 0), Vec3(1, 0.6, 0.4), 10, 6, 4);
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> d(-0.02, 0.02);
+  for (Vec3& p : m.points)
+    if (p.x() > 0 && p.x() < 1 && p.y() > 0 && p.y() < 0.6 && p.z() > 0 && p.z() < 0.4)
+      p += Vec3(d(rng), d(rng), d(rng));
+  return m;
+}
+
+double brute_force_distance(const TetMesh& m, const TetLocator& loc, const Vec3& p) {
+  double best = std::numeric_limits<double>::infinity();
+  static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  for (int t = 0; t < static_cast<int>(m.tets.size()); ++t) {
+    const auto b = loc.barycentric(t, p);
+    if (*std::min_element(b.begin(), b.end()) >= 0) return 0;
+    for (const auto& f : kFaces)
+      best = std::min(best, (p - closest_point_on_triangle(p, m.points[m.tets[t][f[0]]],
+                                                           m.points[m.tets[t][f[1]]],
+                                                           m.points[m.tets[t][f[2]]]))
+                                .norm());
+  }
+  return best;
+}
+
+}  // namespace
+
+TEST(TetLocator, FindsTheContainingTetAndReproducesThePoint) {
+  const TetMesh m = jittered_box();
+  const TetLocator loc(m);
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> x(0, 1), y(0, 0.6), z(0, 0.4);
+  for (int k = 0; k < 2000; ++k) {
+    const Vec3 p(x(rng), y(rng), z(rng));
+    const TetLocation l = loc.locate(p);
+    ASSERT_GE(l.tet, 0);
+    EXPECT_TRUE(l.inside());
+    EXPECT_GE(*std::min_element(l.bary.begin(), l.bary.end()), -1e-12);
+    Vec3 q = Vec3::Zero();
+    for (int a = 0; a < 4; ++a) q += l.bary[a] * m.points[m.tets[l.tet][a]];
+    EXPECT_LT((q - p).norm(), 1e-12);
+  }
+}
+
+TEST(TetLocator, OutsidePointsGetTheNearestTetWithSignedCoordinates) {
+  const TetMesh m = jittered_box();
+  const TetLocator loc(m);
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> d(-0.3, 1.3);
+  int outside = 0;
+  for (int k = 0; k < 300; ++k) {
+    const Vec3 p(d(rng), d(rng) * 0.6, d(rng) * 0.4);
+    const TetLocation l = loc.locate(p);
+    const double ref = brute_force_distance(m, loc, p);
+    EXPECT_NEAR(l.distance, ref, 1e-12);
+    if (ref > 0) {
+      ++outside;
+      EXPECT_LT(*std::min_element(l.bary.begin(), l.bary.end()), 0.0);
+      Vec3 q = Vec3::Zero();  // signed coordinates still reproduce the point (extrapolation)
+      for (int a = 0; a < 4; ++a) q += l.bary[a] * m.points[m.tets[l.tet][a]];
+      EXPECT_LT((q - p).norm(), 1e-10);
+    }
+  }
+  EXPECT_GT(outside, 100);
+}
