@@ -17,7 +17,10 @@ double metres_per(LengthUnit unit);
 struct MeshReadReport {
   std::string format;               // "gmsh-2.2-ascii", "gmsh-4.1-binary", "vtu", "medit", "tetgen"
   int reoriented_tets = 0;          // inverted tets whose orientation was flipped
-  std::vector<std::string> warnings;
+  int removed_vertices = 0;         // vertices used by no tet, dropped
+  std::vector<int> kept_vertices;   // loaded vertex index -> 0-based position in the file
+  std::vector<std::string> warnings;  // also printed with warn()
+  std::vector<std::string> notes;     // not printed: "ignored 64 triangles"
 };
 
 /// Reads a tet-only mesh (.msh, .vtu, .mesh, .node/.ele) and returns it in metres with every
