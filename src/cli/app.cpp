@@ -6,6 +6,7 @@
 #include <iostream>
 #include <new>
 
+#include "cli/mesh_command.hpp"
 #include "cli/progress_reporter.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
@@ -80,6 +81,7 @@ int run_cli(int argc, char** argv) {
   CLI::App* check = app.add_subcommand(
       "check", "Validate a scenario and its meshes; print the resolved scenario");
   add_scenario_args(check, check_args);
+  const MeshCommand mesh = add_mesh_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -88,6 +90,7 @@ int run_cli(int argc, char** argv) {
   }
   try {
     if (*run) return command_run(run_args);
+    if (*mesh.command) return mesh.run();
     return command_check(check_args);
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << '\n';

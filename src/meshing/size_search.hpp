@@ -1,0 +1,41 @@
+#pragma once
+// The thesis' "try several, keep the best" loop (method.md §4.1 point 3), on the mesh size:
+// a secant search on log(size) drives the tet count to the target
+// (count ~ size^-3), every mesh it makes is a candidate, four more are made just around the
+// best size; then, among the candidates within the tolerance band of the target, the one
+// with the best quality wins (minimum dihedral angle, then mean radius ratio). When no
+// candidate falls in the band (tiny targets, where the count jumps with the size), the
+// closest count wins.
+#include <cstddef>
+#include <string>
+
+#include "mesh/tet_mesh.hpp"
+#include "meshing/geometry_source.hpp"
+#include "meshing/tet_quality.hpp"
+#include "meshing/volume_mesher.hpp"
+
+namespace mrsim {
+
+struct SearchOptions {
+  double tolerance = 0.2;       // accepted relative deviation of the tet count
+  double close_enough = 0.05;   // the secant search stops within this deviation
+  int max_steps = 6;            // secant steps per algorithm
+  bool match_volume = true;     // restore the input's volume (volume_match.hpp)
+};
+
+struct LevelMesh {
+  TetMesh mesh;
+  TetQuality quality;
+  MeshSettings settings;
+  double raw_volume = 0.0;        // m^3, as gmsh made it, before volume matching
+  double boundary_offset = 0.0;   // m, normal offset applied by volume matching
+  int candidates = 0;        // meshes made
+  int failed_attempts = 0;   // gmsh errors (skipped)
+  bool within_tolerance = false;
+};
+
+/// Throws InputError when gmsh fails at every size tried (the message carries gmsh's reason).
+LevelMesh search_level(const GeometrySource& source, std::size_t target_tets,
+                       const SearchOptions& options = {});
+
+}  // namespace mrsim
