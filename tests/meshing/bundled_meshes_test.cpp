@@ -1,0 +1,47 @@
+// The committed levels of scenarios/meshes (made by scripts/make_bundled_meshes.sh): they
+// load, their counts are within the band, min dihedral >= 10 deg, and the finer levels keep
+// the object's volume within 2 %.
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "mesh/mesh_reader.hpp"
+#include "meshing/tet_quality.hpp"
+#include "meshing_test_support.hpp"
+
+namespace mrsim::test {
+namespace {
+
+void check_bundled(const std::string& object, std::size_t level_count) {
+  const auto dir = source_dir() / "scenarios" / "meshes";
+  std::ifstream in(dir / (object + "_quality.json"));
+  ASSERT_TRUE(in) << object;
+  const auto report = nlohmann::json::parse(in);
+  const double reference = report["reference_volume_m3"];
+  ASSERT_EQ(report["levels"].size(), level_count);
+  std::size_t previous = 0;
+  for (std::size_t k = 0; k < level_count; ++k) {
+    const auto& level = report["levels"][k];
+    const auto file = dir / level["file"].get<std::string>();
+    EXPECT_LT(std::filesystem::file_size(file), 2u << 20) << file;
+    const TetQuality q = measure_quality(read_tet_mesh(file, LengthUnit::Metre));
+    EXPECT_EQ(q.tets, level["tets"].get<std::size_t>()) << file;
+    EXPECT_GT(q.tets, previous) << file;
+    previous = q.tets;
+    const double requested = level["requested_tets"];
+    if (requested >= 150) {
+      EXPECT_NEAR(static_cast<double>(q.tets), requested, 0.2 * requested) << file;
+    }
+    EXPECT_GE(q.min_dihedral_deg, 10.0) << file;
+    if (k + 2 >= level_count) {  // the two finest levels
+      EXPECT_NEAR(q.volume / reference, 1.0, 0.02) << file;
+    }
+  }
+}
+
+TEST(BundledMeshes, Liver) { check_bundled("liver", 4); }
+TEST(BundledMeshes, LittleMan) { check_bundled("little_man", 3); }
+TEST(BundledMeshes, Beam) { check_bundled("beam", 3); }
+
+}  // namespace
+}  // namespace mrsim::test
