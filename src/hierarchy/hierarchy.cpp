@@ -54,6 +54,7 @@ void Hierarchy::ensure_resolvable(int l, int g, std::vector<std::pair<int, int>>
   for (int q : levels_[l - 1].mesh->tets[t]) {
     if (state(l - 1, q) != NodeState::Inactive) continue;
     flags_[l - 1].support[q] = 1;
+    touched_.emplace_back(l - 1, q);
     if (woken) woken->emplace_back(l - 1, q);
     ensure_resolvable(l - 1, q, woken);
   }
@@ -62,14 +63,17 @@ void Hierarchy::ensure_resolvable(int l, int g, std::vector<std::pair<int, int>>
 std::vector<std::pair<int, int>> Hierarchy::split(int l, int p) {
   std::vector<std::pair<int, int>> woken;
   flags_[l].subdivided[p] = 1;
+  touched_.emplace_back(l, p);
   Flags& fine = flags_[l + 1];
   for (int a : links_[l].active_set.row(p)) {
     if (state(l + 1, a) == NodeState::Inactive) woken.emplace_back(l + 1, a);
     ++fine.active_ref[a];
+    touched_.emplace_back(l + 1, a);
   }
   for (int g : links_[l].ghost_set.row(p)) {
     if (state(l + 1, g) == NodeState::Inactive) woken.emplace_back(l + 1, g);
     ++fine.ghost_ref[g];
+    touched_.emplace_back(l + 1, g);
     if (state(l + 1, g) == NodeState::GhostIface) ensure_resolvable(l + 1, g, &woken);
   }
   return woken;
@@ -77,9 +81,16 @@ std::vector<std::pair<int, int>> Hierarchy::split(int l, int p) {
 
 void Hierarchy::merge(int l, int p) {
   flags_[l].subdivided[p] = 0;
+  touched_.emplace_back(l, p);
   Flags& fine = flags_[l + 1];
-  for (int a : links_[l].active_set.row(p)) --fine.active_ref[a];
-  for (int g : links_[l].ghost_set.row(p)) --fine.ghost_ref[g];
+  for (int a : links_[l].active_set.row(p)) {
+    --fine.active_ref[a];
+    touched_.emplace_back(l + 1, a);
+  }
+  for (int g : links_[l].ghost_set.row(p)) {
+    --fine.ghost_ref[g];
+    touched_.emplace_back(l + 1, g);
+  }
   // Points of the former sets that stay needed as ghosts must stay resolvable, and a point
   // that fell inactive while a finer interface ghost still interpolates from it stays as
   // support (the source's GC would otherwise leave that ghost without data until the frame end).
@@ -110,7 +121,11 @@ int Hierarchy::collect_garbage() {
         for (int q : levels_[l - 1].mesh->tets[links_[l].parent_tet.tet[g]])
           if (state(l - 1, q) == NodeState::Inactive) flags_[l - 1].support[q] = 1;
   for (size_t l = 0; l < flags_.size(); ++l)
-    for (size_t p = 0; p < before[l].size(); ++p) released += before[l][p] && !flags_[l].support[p];
+    for (size_t p = 0; p < before[l].size(); ++p)
+      if (before[l][p] != flags_[l].support[p]) {
+        released += before[l][p];
+        touched_.emplace_back(static_cast<int>(l), static_cast<int>(p));
+      }
   return released;
 }
 

@@ -5,6 +5,7 @@
 // merge are exact inverses. Purely combinatorial: the dynamics read it (simulation/).
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hierarchy/level_links.hpp"
@@ -47,6 +48,10 @@ class Hierarchy {
 
   std::int64_t count(int level, NodeState s) const;
 
+  /// Points whose status may have changed since the last call (duplicates possible), so the
+  /// working lists are updated in O(changes) rather than O(all points).
+  std::vector<std::pair<int, int>> take_touched() { return std::exchange(touched_, {}); }
+
  private:
   struct Flags {
     std::vector<std::uint8_t> subdivided, support;
@@ -58,6 +63,7 @@ class Hierarchy {
   std::vector<HierarchyLevel> levels_;
   std::vector<LevelLinks> links_;
   std::vector<Flags> flags_;
+  std::vector<std::pair<int, int>> touched_;
 };
 
 const char* node_state_name(NodeState s);

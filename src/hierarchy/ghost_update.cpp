@@ -1,0 +1,45 @@
+#include "hierarchy/ghost_update.hpp"
+
+namespace mrsim {
+
+Vec3 interpolate(const Vec3* values, const Tet& tet, const Bary& b) {
+  return b[0] * values[tet[0]] + b[1] * values[tet[1]] + b[2] * values[tet[2]] +
+         b[3] * values[tet[3]];
+}
+
+namespace {
+
+void from_tets(const std::vector<int>& points, const Embedding& emb, const TetMesh& source_mesh,
+               const LevelFields& source, LevelFields& target) {
+  for (int p : points) {
+    const Tet& t = source_mesh.tets[emb.tet[p]];
+    target.u[p] = interpolate(source.u, t, emb.bary[p]);
+    target.v[p] = interpolate(source.v, t, emb.bary[p]);
+  }
+}
+
+}  // namespace
+
+void update_ghosts(const Hierarchy& h, const StatusLists& lists, std::vector<LevelFields>& fields) {
+  const int L = h.num_levels();
+  for (int l = L - 2; l >= 0; --l)
+    from_tets(lists.ghost_sub(l), h.links(l).child_tet, *h.level(l + 1).mesh, fields[l + 1],
+              fields[l]);
+  for (int l = 1; l < L; ++l)
+    from_tets(lists.ghost_iface(l), h.links(l).parent_tet, *h.level(l - 1).mesh, fields[l - 1],
+              fields[l]);
+}
+
+void interpolate_inactive(const Hierarchy& h, std::vector<LevelFields>& fields) {
+  for (int l = 1; l < h.num_levels(); ++l) {
+    const auto& emb = h.links(l).parent_tet;
+    const TetMesh& coarse = *h.level(l - 1).mesh;
+    for (int p = 0; p < h.num_points(l); ++p)
+      if (h.state(l, p) == NodeState::Inactive) {
+        fields[l].u[p] = interpolate(fields[l - 1].u, coarse.tets[emb.tet[p]], emb.bary[p]);
+        fields[l].v[p] = interpolate(fields[l - 1].v, coarse.tets[emb.tet[p]], emb.bary[p]);
+      }
+  }
+}
+
+}  // namespace mrsim
