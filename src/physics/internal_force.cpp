@@ -1,5 +1,7 @@
 #include "physics/internal_force.hpp"
 
+#include <algorithm>
+
 #include "core/parallel.hpp"
 #include "physics/stress.hpp"
 
@@ -7,13 +9,14 @@ namespace mrsim {
 
 namespace {
 
-void cauchy_gather(const LevelModel& m, const Vec3* u, const Vec3* v, Vec3* f) {
-  const int n = m.num_points();
+void cauchy_gather(const LevelModel& m, IndexSet points, const Vec3* u, const Vec3* v, Vec3* f) {
+  const int n = points.count;
   const bool damped = !m.D.empty();
   const int* start = m.adj.nbr_start.data();
   const int* nbr = m.adj.nbr.data();
 #pragma omp parallel for schedule(static) if (n >= parallel_threshold())
-  for (int i = 0; i < n; ++i) {
+  for (int k = 0; k < n; ++k) {
+    const int i = points[k];
     Vec3 fi = Vec3::Zero();
     const Vec3 ui = u[i];
     for (int e = start[i]; e < start[i + 1]; ++e) fi.noalias() -= m.K[e] * (u[nbr[e]] - ui);
@@ -42,17 +45,19 @@ inline void green_tet_forces(const LevelModel& m, int t, const Vec3* u, const Ve
   for (int a = 0; a < 4; ++a) out[a].noalias() = P * g[a];
 }
 
-void green_forces(const LevelModel& m, const Vec3* u, const Vec3* v, Vec3* f, ForceWorkspace& ws) {
-  const int nt = m.num_tets();
-  const int n = m.num_points();
+void green_forces(const LevelModel& m, IndexSet points, IndexSet tets, const Vec3* u,
+                  const Vec3* v, Vec3* f, ForceWorkspace& ws) {
+  const int nt = tets.count;
+  const int n = points.count;
   ws.reserve_for(m);
   TetGradients* tf = ws.tet_force.data();
 #pragma omp parallel if (n >= parallel_threshold())
   {
 #pragma omp for schedule(static)
-    for (int t = 0; t < nt; ++t) green_tet_forces(m, t, u, v, tf[t]);
+    for (int k = 0; k < nt; ++k) green_tet_forces(m, tets[k], u, v, tf[tets[k]]);
 #pragma omp for schedule(static)
-    for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < n; ++k) {
+      const int i = points[k];
       Vec3 fi = Vec3::Zero();
       for (int s = m.adj.inc_start[i]; s < m.adj.inc_start[i + 1]; ++s)
         fi += tf[m.adj.inc_tet[s]][m.adj.inc_local[s]];
@@ -70,10 +75,31 @@ void ForceWorkspace::reserve_for(const LevelModel& model) {
 
 void internal_forces(const LevelModel& model, const Vec3* u, const Vec3* v, Vec3* f,
                      ForceWorkspace& ws) {
+  internal_forces(model, IndexSet::all(model.num_points()), IndexSet::all(model.num_tets()), u, v,
+                  f, ws);
+}
+
+void internal_forces(const LevelModel& model, IndexSet points, IndexSet tets, const Vec3* u,
+                     const Vec3* v, Vec3* f, ForceWorkspace& ws) {
   if (model.law.strain == StrainMeasure::Cauchy)
-    cauchy_gather(model, u, v, f);
+    cauchy_gather(model, points, u, v, f);
   else
-    green_forces(model, u, v, f, ws);
+    green_forces(model, points, tets, u, v, f, ws);
+}
+
+void live_tets(const LevelModel& m, IndexSet points, std::vector<unsigned char>& mark,
+               std::vector<int>& out) {
+  out.clear();
+  for (int k = 0; k < points.count; ++k) {
+    const int i = points[k];
+    for (int s = m.adj.inc_start[i]; s < m.adj.inc_start[i + 1]; ++s)
+      if (!mark[m.adj.inc_tet[s]]) {
+        mark[m.adj.inc_tet[s]] = 1;
+        out.push_back(m.adj.inc_tet[s]);
+      }
+  }
+  for (int t : out) mark[t] = 0;
+  std::sort(out.begin(), out.end());
 }
 
 Vec3 point_internal_force(const LevelModel& m, int i, const Vec3* u, const Vec3* v) {

@@ -5,6 +5,7 @@
 //   Green:  f_a = -Σ_{t∋a} V_t F_t (S_t + 𝒱_t) ∇N_a                (per-tet pass, then gather)
 #include <vector>
 
+#include "core/index_set.hpp"
 #include "physics/level_model.hpp"
 
 namespace mrsim {
@@ -18,6 +19,17 @@ struct ForceWorkspace {
 /// f[i] = internal force on every point i of the level (overwrites f).
 void internal_forces(const LevelModel& model, const Vec3* u, const Vec3* v, Vec3* f,
                      ForceWorkspace& ws);
+
+/// Internal forces on `points` only (overwrites f there, leaves the rest). Green needs the
+/// per-tet pass on every tet incident to those points: `tets` must contain them all
+/// (see live_tets()); Cauchy ignores it. Cost O(points + tets).
+void internal_forces(const LevelModel& model, IndexSet points, IndexSet tets, const Vec3* u,
+                     const Vec3* v, Vec3* f, ForceWorkspace& ws);
+
+/// Tets incident to at least one of `points`, ascending, using `mark` (one byte per tet, all
+/// zero on entry and on return) to deduplicate. O(Σ incident tets).
+void live_tets(const LevelModel& model, IndexSet points, std::vector<unsigned char>& mark,
+               std::vector<int>& out);
 
 /// Internal force on one point from its incident tets only (used by the Jacobian probe of the
 /// semi-implicit step, method.md §5.3). Equal to internal_forces()[i] up to rounding.

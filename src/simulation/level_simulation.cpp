@@ -17,8 +17,12 @@ LevelSimulation::LevelSimulation(const TetMesh& mesh, const LevelSetup& setup)
   SemiImplicitFilter filter;
   if (setup.integrator == Integrator::SemiImplicit)
     filter = SemiImplicitFilter(model_, state_.inv_mass, dt_);
-  integrator_ = std::make_unique<LevelIntegrator>(setup.integrator, *forces_, std::move(filter));
-  integrator_->start(state_);
+  std::vector<IntegrationBlock> blocks(1);
+  blocks[0].state = &state_;
+  blocks[0].forces = forces_.get();
+  blocks[0].filter = std::move(filter);
+  stepper_ = std::make_unique<Stepper>(setup.integrator, std::move(blocks));
+  stepper_->start();
 }
 
 void LevelSimulation::set_initial_velocity(const LevelSetup& setup) {
@@ -30,7 +34,7 @@ void LevelSimulation::set_initial_velocity(const LevelSetup& setup) {
 }
 
 void LevelSimulation::advance(int steps) {
-  for (int s = 0; s < steps; ++s) integrator_->step(state_, dt_);
+  for (int s = 0; s < steps; ++s) stepper_->step(dt_);
 }
 
 double LevelSimulation::elastic_energy() const {

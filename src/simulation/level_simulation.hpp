@@ -6,7 +6,7 @@
 
 #include "physics/level_model.hpp"
 #include "simulation/level_force_field.hpp"
-#include "time/level_integrator.hpp"
+#include "time/stepper.hpp"
 
 namespace mrsim {
 
@@ -30,7 +30,7 @@ class LevelSimulation {
   const PointState& state() const { return state_; }
   PointState& state() { return state_; }
   double dt() const { return dt_; }
-  std::int64_t force_evaluations() const { return integrator_->force_evaluations(); }
+  std::int64_t force_evaluations() const { return stepper_->force_evaluations(0); }
   double elastic_energy() const;
 
  private:
@@ -39,7 +39,7 @@ class LevelSimulation {
   PointState state_;
   double dt_;
   std::unique_ptr<LevelForceField> forces_;
-  std::unique_ptr<LevelIntegrator> integrator_;
+  std::unique_ptr<Stepper> stepper_;
 };
 
 }  // namespace mrsim

@@ -37,11 +37,13 @@ SemiImplicitFilter::SemiImplicitFilter(const LevelModel& model, const std::vecto
     w_[i] = (Mat3::Identity() - (dt * dt * inv_mass[i]) * J[i]).inverse();
 }
 
-void SemiImplicitFilter::apply(PointState& s) const {
-  const int n = s.size();
+void SemiImplicitFilter::apply(PointState& s, IndexSet points) const {
+  const int n = points.count;
 #pragma omp parallel for schedule(static) if (n >= parallel_threshold())
-  for (int i = 0; i < n; ++i)
+  for (int k = 0; k < n; ++k) {
+    const int i = points[k];
     if (s.free_point[i]) s.v[i] = w_[i] * s.v[i];
+  }
 }
 
 }  // namespace mrsim

@@ -5,6 +5,7 @@
 // one-sided differences, as in the source). J_i is exactly -K_ii for the Cauchy model.
 #include <vector>
 
+#include "core/index_set.hpp"
 #include "physics/level_model.hpp"
 #include "time/point_state.hpp"
 
@@ -17,8 +18,9 @@ class SemiImplicitFilter {
  public:
   SemiImplicitFilter() = default;
   SemiImplicitFilter(const LevelModel& model, const std::vector<double>& inv_mass, double dt);
-  /// v_i <- W_i v_i for every free point.
-  void apply(PointState& s) const;
+  /// v_i <- W_i v_i for every free point of `points`.
+  void apply(PointState& s, IndexSet points) const;
+  bool empty() const { return w_.empty(); }
   const Mat3& W(int i) const { return w_[i]; }
 
  private:

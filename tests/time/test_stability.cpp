@@ -9,7 +9,7 @@
 
 #include "mesh/box_mesh.hpp"
 #include "physics/internal_force.hpp"
-#include "time/level_integrator.hpp"
+#include "time/stepper.hpp"
 
 using namespace mrsim;
 
@@ -18,7 +18,10 @@ namespace {
 class ElasticOnly final : public ForceField {
  public:
   explicit ElasticOnly(const LevelModel& m) : m_(m) {}
-  void evaluate(const Vec3* u, const Vec3* v, Vec3* f) override { internal_forces(m_, u, v, f, ws_); }
+  std::int64_t evaluate(const Vec3* u, const Vec3* v, Vec3* f) override {
+    internal_forces(m_, u, v, f, ws_);
+    return m_.num_points();
+  }
 
  private:
   const LevelModel& m_;
@@ -64,15 +67,19 @@ double growth(const LevelModel& m, Integrator kind, double dt, int steps) {
   ElasticOnly forces(m);
   SemiImplicitFilter filter;
   if (kind == Integrator::SemiImplicit) filter = SemiImplicitFilter(m, s.inv_mass, dt);
-  LevelIntegrator integ(kind, forces, filter);
-  integ.start(s);
+  std::vector<IntegrationBlock> blocks(1);
+  blocks[0].state = &s;
+  blocks[0].forces = &forces;
+  blocks[0].filter = filter;
+  Stepper integ(kind, std::move(blocks));
+  integ.start();
   auto energy = [&] {
     double e = elastic_energy(m, s.u.data());
     for (int i = 0; i < s.size(); ++i) e += 0.5 * m.mass[i] * s.v[i].squaredNorm();
     return e;
   };
   const double e0 = energy();
-  for (int k = 0; k < steps; ++k) integ.step(s, dt);
+  for (int k = 0; k < steps; ++k) integ.step(dt);
   return energy() / e0;
 }
 
