@@ -1,0 +1,68 @@
+#pragma once
+// Several independent meshes of one object simulated together (thesis ch. 5, method.md §4):
+// each level integrates only its active points, ghosts are refreshed after every position update
+// (§4.8), and splits/merges change the active sets between steps. Level 0 alone, never split,
+// is exactly the single-level model.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "hierarchy/ghost_update.hpp"
+#include "hierarchy/status_lists.hpp"
+#include "physics/level_model.hpp"
+#include "simulation/level_force_field.hpp"
+#include "time/stepper.hpp"
+
+namespace mrsim {
+
+struct HierarchySetup {
+  MaterialLaw law;
+  Vec3 gravity = Vec3::Zero();
+  Integrator integrator = Integrator::ModifiedEuler;
+  double dt = 1e-3;
+  std::vector<std::vector<std::uint8_t>> fixed;  // per level, 1 = Dirichlet; empty = none
+};
+
+class HierarchicalSimulation {
+ public:
+  HierarchicalSimulation(const std::vector<const TetMesh*>& meshes, const HierarchySetup& setup);
+
+  int num_levels() const { return static_cast<int>(models_.size()); }
+  const LevelModel& model(int l) const { return *models_[l]; }
+  const PointState& state(int l) const { return states_[l]; }
+  PointState& state(int l) { return states_[l]; }
+  const Hierarchy& hierarchy() const { return *hierarchy_; }
+  const StatusLists& lists() const { return *lists_; }
+  std::int64_t force_evaluations(int l) const { return stepper_->force_evaluations(l); }
+
+  void advance(int steps);
+
+  /// Topology changes, applied between steps. After any of them call apply_changes().
+  void split(int level, int point);
+  void merge(int level, int point);
+  int collect_garbage() { return hierarchy_->collect_garbage(); }
+  /// Refiles points, gives newly woken points their interpolated state, refreshes ghosts,
+  /// force fields and the integrator.
+  void apply_changes();
+
+  /// Every inactive point gets the displacement interpolated from the coarser levels (output).
+  void fill_inactive();
+  /// Ghost refresh (method.md §4.8); also what the stepper calls after position updates.
+  void refresh_ghosts();
+
+ private:
+  Vec3 fresh_value(int l, int q, bool velocity) const;
+
+  std::vector<std::unique_ptr<LevelModel>> models_;
+  std::vector<PointState> states_;
+  std::unique_ptr<Hierarchy> hierarchy_;
+  std::unique_ptr<StatusLists> lists_;
+  std::vector<std::unique_ptr<LevelForceField>> forces_;
+  std::unique_ptr<Stepper> stepper_;
+  std::vector<LevelFields> fields_;
+  std::vector<std::pair<int, int>> woken_;
+  std::vector<std::vector<std::uint8_t>> stale_;  // woken, not yet initialised
+  double dt_ = 0;
+};
+
+}  // namespace mrsim
