@@ -1,0 +1,77 @@
+#include "simulation/space_adaptivity.hpp"
+
+#include <algorithm>
+#include <tuple>
+
+#include "physics/laplacian_criterion.hpp"
+
+namespace mrsim {
+
+SpaceAdaptivity::SpaceAdaptivity(const SpaceAdaptivitySettings& settings,
+                                 const HierarchicalSimulation& sim)
+    : s_(settings), criterion_(sim.num_levels()), split_frame_(sim.num_levels()) {
+  s_.max_level = std::min(s_.max_level, sim.num_levels() - 1);
+  for (int l = 0; l < sim.num_levels(); ++l) {
+    criterion_[l].assign(sim.model(l).num_points(), 0.0);
+    split_frame_[l].assign(sim.model(l).num_points(), -1);
+  }
+}
+
+void SpaceAdaptivity::evaluate(const HierarchicalSimulation& sim) {
+  for (int l = 0; l < sim.num_levels(); ++l) {
+    std::fill(criterion_[l].begin(), criterion_[l].end(), 0.0);
+    const LevelModel& m = sim.model(l);
+    for (int p : sim.lists().active(l))
+      criterion_[l][p] = m.mean_edge[p] * corrected_laplacian(m, p, sim.state(l).u.data()).norm();
+  }
+}
+
+void SpaceAdaptivity::split_worst(HierarchicalSimulation& sim, int frame,
+                                  std::vector<HierarchyEvent>& events) {
+  std::vector<std::tuple<double, int, int>> worst;  // (-c, level, point): worst first, stable
+  for (int l = 0; l < s_.max_level; ++l)
+    for (int p : sim.lists().active(l))
+      if (criterion_[l][p] > s_.refine_above && sim.hierarchy().can_split(l, p))
+        worst.emplace_back(-criterion_[l][p], l, p);
+  std::sort(worst.begin(), worst.end());
+  std::int64_t active = 0;
+  for (int l = 0; l < sim.num_levels(); ++l) active += sim.lists().active(l).size();
+  for (const auto& [neg_c, l, p] : worst) {
+    if (!sim.hierarchy().can_split(l, p)) continue;
+    const auto added = static_cast<std::int64_t>(sim.hierarchy().links(l).active_set.row(p).size());
+    if (s_.max_active_points > 0 && active + added > s_.max_active_points) break;
+    sim.split(l, p);
+    active += added;
+    split_frame_[l][p] = frame;
+    events.push_back({frame, "split", l, p});
+  }
+}
+
+void SpaceAdaptivity::merge_calm(HierarchicalSimulation& sim, int frame,
+                                 std::vector<HierarchyEvent>& events) {
+  for (int l = sim.num_levels() - 2; l >= 0; --l) {  // leaves first
+    const std::vector<int> subdivided = sim.lists().ghost_sub(l);
+    for (int p : subdivided) {
+      if (split_frame_[l][p] >= 0 && frame - split_frame_[l][p] < s_.min_dwell_frames) continue;
+      if (!sim.hierarchy().can_merge(l, p)) continue;
+      double worst = 0;
+      for (int c : sim.hierarchy().links(l).children.row(p)) worst = std::max(worst, criterion_[l + 1][c]);
+      if (worst >= s_.coarsen_below) continue;
+      sim.merge(l, p);
+      events.push_back({frame, "merge", l, p});
+    }
+  }
+}
+
+void SpaceAdaptivity::update(HierarchicalSimulation& sim, int frame,
+                             std::vector<HierarchyEvent>& events) {
+  evaluate(sim);
+  if (!s_.enabled || sim.num_levels() == 1) return;
+  split_worst(sim, frame, events);
+  merge_calm(sim, frame, events);
+  const int released = sim.collect_garbage();
+  if (released > 0) events.push_back({frame, "gc", -1, released});
+  sim.apply_changes();
+}
+
+}  // namespace mrsim

@@ -1,0 +1,51 @@
+#pragma once
+// The split/merge decisions of method.md §3.3, once per display frame: the quality indicator
+// c_i = h_i ‖Δu_i‖ on every active point; splits above `refine_above`, worst first, up to
+// `max_level` and an optional cap on active points; merges of subdivided points whose active
+// children are all below `coarsen_below` (hysteresis: coarsen_below < refine_above / r) after
+// at least `min_dwell_frames` frames, finest first; then garbage collection of ghosts (§4.7).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "simulation/hierarchical_simulation.hpp"
+
+namespace mrsim {
+
+struct SpaceAdaptivitySettings {
+  bool enabled = false;
+  double refine_above = 0.05;
+  double coarsen_below = 0.0125;
+  int max_level = 1 << 30;           // clamped to the last level
+  std::int64_t max_active_points = 0;  // 0: no cap
+  int min_dwell_frames = 5;
+};
+
+struct HierarchyEvent {
+  int frame = 0;
+  std::string kind;  // "split", "merge", "gc"
+  int level = 0;
+  long long point = -1;  // for gc: number of support ghosts released
+};
+
+class SpaceAdaptivity {
+ public:
+  SpaceAdaptivity(const SpaceAdaptivitySettings& settings, const HierarchicalSimulation& sim);
+  /// Evaluates the criterion, splits/merges, collects garbage and applies the changes.
+  /// Appends what happened to `events`.
+  void update(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events);
+  /// c_i of the last update, per level (0 where the point is not active).
+  const std::vector<double>& criterion(int level) const { return criterion_[level]; }
+  /// Evaluates the criterion only (for output when adaptivity is off).
+  void evaluate(const HierarchicalSimulation& sim);
+
+ private:
+  void split_worst(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events);
+  void merge_calm(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events);
+
+  SpaceAdaptivitySettings s_;
+  std::vector<std::vector<double>> criterion_;
+  std::vector<std::vector<int>> split_frame_;  // frame of the last split of each point
+};
+
+}  // namespace mrsim

@@ -1,0 +1,103 @@
+// The Laplacian criterion drives splits where the displacement bends and merges when it
+// straightens (method.md §3.3); the hierarchy returns to its initial state after a release.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "mesh/box_mesh.hpp"
+#include "simulation/space_adaptivity.hpp"
+
+using namespace mrsim;
+
+namespace {
+
+std::vector<TetMesh> three_boxes() {
+  std::vector<TetMesh> meshes;
+  std::mt19937 rng(8);
+  const int cells[3][3] = {{4, 3, 2}, {8, 5, 4}, {16, 10, 7}};
+  for (const auto& c : cells) {
+    TetMesh m = make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.06, 0.04), c[0], c[1], c[2]);
+    std::uniform_real_distribution<double> d(-0.15, 0.15);
+    const Vec3 h(0.1 / c[0], 0.06 / c[1], 0.04 / c[2]);
+    for (Vec3& p : m.points)
+      if (p.x() > 1e-9 && p.x() < 0.1 - 1e-9 && p.y() > 1e-9 && p.y() < 0.06 - 1e-9 &&
+          p.z() > 1e-9 && p.z() < 0.04 - 1e-9)
+        p += Vec3(d(rng) * h.x(), d(rng) * h.y(), d(rng) * h.z());
+    meshes.push_back(std::move(m));
+  }
+  return meshes;
+}
+
+// A dent of depth `depth` under a point of the top face.
+Vec3 dent(const Vec3& X, double depth) {
+  const Vec3 c(0.05, 0.03, 0.04);
+  return Vec3(0, 0, -depth * std::exp(-(X - c).squaredNorm() / (0.012 * 0.012)));
+}
+
+void impose(HierarchicalSimulation& sim, double depth) {
+  for (int l = 0; l < sim.num_levels(); ++l)
+    for (int p : sim.lists().active(l)) sim.state(l).u[p] = dent(sim.model(l).mesh->points[p], depth);
+  sim.refresh_ghosts();
+}
+
+}  // namespace
+
+TEST(SpaceAdaptivity, ADentRefinesUnderItAndCoarsensBackWhenReleased) {
+  const auto meshes = three_boxes();
+  HierarchySetup hs;
+  hs.law.lambda = 5.0e4;
+  hs.law.mu = 2.0e4;
+  HierarchicalSimulation sim({&meshes[0], &meshes[1], &meshes[2]}, hs);
+  SpaceAdaptivitySettings s;
+  s.enabled = true;
+  s.refine_above = 0.02;
+  s.coarsen_below = 0.005;
+  s.min_dwell_frames = 3;
+  SpaceAdaptivity adapt(s, sim);
+  std::vector<HierarchyEvent> events;
+  for (int frame = 0; frame < 6; ++frame) {
+    impose(sim, 2e-3);
+    adapt.update(sim, frame, events);
+    ASSERT_TRUE(sim.hierarchy().check_invariants().empty());
+  }
+  // Finest points are active under the dent, and only there.
+  const auto& fine = sim.lists().active(2);
+  ASSERT_GT(fine.size(), 5u);
+  for (int p : fine)
+    EXPECT_LT((meshes[2].points[p] - Vec3(0.05, 0.03, 0.04)).norm(), 0.05);
+  EXPECT_LT(fine.size(), meshes[2].points.size() / 3);
+  EXPECT_GT(std::count_if(events.begin(), events.end(), [](auto& e) { return e.kind == "split"; }), 0);
+  // Release: the field is flat again; after the dwell time everything merges back.
+  for (int frame = 6; frame < 20; ++frame) {
+    impose(sim, 0.0);
+    adapt.update(sim, frame, events);
+    ASSERT_TRUE(sim.hierarchy().check_invariants().empty());
+  }
+  EXPECT_EQ(sim.lists().active(0).size(), meshes[0].points.size());
+  EXPECT_TRUE(sim.lists().active(1).empty());
+  EXPECT_TRUE(sim.lists().active(2).empty());
+  EXPECT_EQ(sim.lists().total(StatusLists::kGhostIface) + sim.lists().total(StatusLists::kGhostSub), 0u);
+}
+
+TEST(SpaceAdaptivity, ActivePointCapIsRespected) {
+  const auto meshes = three_boxes();
+  HierarchySetup hs;
+  hs.law.lambda = 5.0e4;
+  hs.law.mu = 2.0e4;
+  HierarchicalSimulation sim({&meshes[0], &meshes[1], &meshes[2]}, hs);
+  SpaceAdaptivitySettings s;
+  s.enabled = true;
+  s.refine_above = 0.02;
+  s.max_active_points = 150;
+  SpaceAdaptivity adapt(s, sim);
+  std::vector<HierarchyEvent> events;
+  for (int frame = 0; frame < 5; ++frame) {
+    impose(sim, 2e-3);
+    adapt.update(sim, frame, events);
+  }
+  std::size_t active = 0;
+  for (int l = 0; l < 3; ++l) active += sim.lists().active(l).size();
+  EXPECT_LE(active, 150u);
+  EXPECT_GT(sim.lists().active(1).size(), 0u);
+}
