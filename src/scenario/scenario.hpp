@@ -2,6 +2,7 @@
 // The typed, validated scenario the simulation consumes. It is built only from a JSON document
 // that already passed schemas/scenario.schema.json with defaults injected, so every field here
 // is set. All quantities are SI; `object.units` only describes the mesh files.
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -54,6 +55,14 @@ struct TimeSpec {
   double divergence_energy_factor = 1.0;  // see simulation/divergence.hpp
 };
 
+struct SpaceAdaptivitySpec {
+  bool enabled = true;
+  double refine_above = 0.05, coarsen_below = 0.0125;  // on c = h |Δu| (dimensionless)
+  int max_level = -1;                 // -1: the last level
+  std::int64_t max_active_points = 0;  // 0: no cap
+  int min_dwell_frames = 5;
+};
+
 struct OutputSpec {
   std::filesystem::path dir;  // output folder
   int every = 1;              // write a VTK frame every N display frames
@@ -70,6 +79,7 @@ struct Scenario {
   Vec3 gravity = Vec3::Zero();
   InitialSpec initial;
   TimeSpec time;
+  SpaceAdaptivitySpec space;
   OutputSpec output;
   nlohmann::json resolved;  // the validated document, every default explicit, material.derived
 };

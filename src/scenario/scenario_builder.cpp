@@ -62,6 +62,17 @@ TimeSpec time_spec(const json& t) {
   return spec;
 }
 
+SpaceAdaptivitySpec space_spec(const json& a) {
+  SpaceAdaptivitySpec spec;
+  spec.enabled = a["enabled"].get<bool>();
+  spec.refine_above = a["refine_above"].get<double>();
+  spec.coarsen_below = a["coarsen_below"].get<double>();
+  spec.max_level = a.contains("max_level") ? a["max_level"].get<int>() : -1;
+  spec.max_active_points = a["max_active_points"].get<std::int64_t>();
+  spec.min_dwell_frames = a["min_dwell_frames"].get<int>();
+  return spec;
+}
+
 OutputSpec output_spec(const json& o) {
   return {o["dir"].get<std::string>(), o["every"].get<int>(), o["vtk"].get<bool>()};
 }
@@ -81,6 +92,7 @@ Scenario build_scenario(const json& resolved, const std::filesystem::path& sourc
   s.initial = {vec3(resolved["initial"]["velocity"]),
                vec3(resolved["initial"]["angular_velocity"])};
   s.time = time_spec(resolved["time"]);
+  s.space = space_spec(resolved["adaptivity"]["space"]);
   s.output = output_spec(resolved["output"]);
   s.resolved = resolved;
   return s;

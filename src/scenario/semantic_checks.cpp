@@ -58,6 +58,20 @@ void check_material(const json& material, std::vector<Issue>& issues) {
       issues.push_back({"/material", "the elastic constants give a non-finite " + key});
 }
 
+void check_adaptivity(const json& document, std::vector<Issue>& issues) {
+  const json& space = document["adaptivity"]["space"];
+  const std::size_t levels = document["object"]["levels"].size();
+  if (space.contains("max_level") && space["max_level"].get<std::size_t>() >= levels)
+    issues.push_back({"/adaptivity/space/max_level",
+                      "no level " + space["max_level"].dump() + " (object.levels has " +
+                          std::to_string(levels) + (levels == 1 ? " level)" : " levels)")});
+  if (space["coarsen_below"].get<double>() >= space["refine_above"].get<double>())
+    issues.push_back({"/adaptivity/space/coarsen_below",
+                      "must be below refine_above (" + space["coarsen_below"].dump() +
+                          " >= " + space["refine_above"].dump() +
+                          "): a point would split and merge back every frame"});
+}
+
 // The name becomes the folder out/<name>: "." and ".." would point elsewhere.
 void check_name(const json& name, std::vector<Issue>& issues) {
   if (name == "." || name == "..")
@@ -72,6 +86,7 @@ void check_semantics(const json& document, const SourceMap& positions) {
   check_fixed(document, issues);
   check_time(document["time"], issues);
   check_material(document["material"], issues);
+  check_adaptivity(document, issues);
   throw_if_any(positions, issues);
 }
 

@@ -13,11 +13,14 @@ DivergenceGuard DivergenceGuard::for_level(const LevelModel& model, double energ
   return g;
 }
 
-std::optional<std::string> DivergenceGuard::check(const PointState& s, double internal_energy) const {
-  for (int i = 0; i < s.size(); ++i)
-    if (!s.u[i].allFinite() || !s.v[i].allFinite()) {
+std::optional<std::string> DivergenceGuard::check(const HierarchicalSimulation& sim,
+                                                   double internal_energy) const {
+  for (int l = 0; l < sim.num_levels(); ++l)
+    for (int i : sim.lists().active(l)) {
+      const PointState& s = sim.state(l);
+      if (s.u[i].allFinite() && s.v[i].allFinite()) continue;
       std::ostringstream os;
-      os << "non-finite displacement or velocity at point " << i;
+      os << "non-finite displacement or velocity at point " << i << " of level " << l;
       return os.str();
     }
   if (!std::isfinite(internal_energy) || internal_energy > energy_bound) {

@@ -7,8 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "physics/level_model.hpp"
-#include "time/point_state.hpp"
+#include "simulation/hierarchical_simulation.hpp"
 
 namespace mrsim {
 
@@ -16,8 +15,8 @@ struct DivergenceGuard {
   double energy_bound = 0;  // J
 
   static DivergenceGuard for_level(const LevelModel& model, double energy_factor);
-  /// A message explaining why the state diverged, or nothing.
-  std::optional<std::string> check(const PointState& s, double internal_energy) const;
+  /// A message explaining why the state diverged, or nothing. Looks at active points only.
+  std::optional<std::string> check(const HierarchicalSimulation& sim, double internal_energy) const;
 };
 
 }  // namespace mrsim

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "simulation/diagnostics.hpp"
+
 namespace mrsim {
 
 HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>& meshes,
@@ -24,6 +26,11 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
     if (l < static_cast<int>(setup.fixed.size()) && !setup.fixed[l].empty())
       for (int i = 0; i < s.size(); ++i) s.free_point[i] = setup.fixed[l][i] ? 0 : 1;
     stale_[l].assign(s.size(), 0);
+    const Vec3 c = centre_of_mass(*models_[0]->mesh, models_[0]->mass);
+    for (int i = 0; i < s.size(); ++i)
+      if (s.free_point[i])
+        s.v[i] = setup.initial_velocity +
+                 setup.initial_angular_velocity.cross(meshes[l]->points[i] - c);
     forces_.push_back(std::make_unique<LevelForceField>(*models_[l], setup.gravity));
     forces_[l]->serve(&lists_->active(l));
     blocks[l].state = &s;

@@ -21,6 +21,8 @@ struct HierarchySetup {
   Integrator integrator = Integrator::ModifiedEuler;
   double dt = 1e-3;
   std::vector<std::vector<std::uint8_t>> fixed;  // per level, 1 = Dirichlet; empty = none
+  Vec3 initial_velocity = Vec3::Zero();          // m/s, every free point of every level
+  Vec3 initial_angular_velocity = Vec3::Zero();  // rad/s about level 0's centre of mass
 };
 
 class HierarchicalSimulation {

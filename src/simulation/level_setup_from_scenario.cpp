@@ -17,15 +17,26 @@ MaterialLaw material_law(const MaterialSpec& spec) {
   return law;
 }
 
-LevelSetup level_setup(const Scenario& sc, const TetMesh& mesh) {
-  LevelSetup s;
+HierarchySetup hierarchy_setup(const Scenario& sc, const std::vector<const TetMesh*>& meshes) {
+  HierarchySetup s;
   s.law = material_law(sc.material);
   s.gravity = sc.gravity;
   s.integrator = sc.time.integrator;
   s.dt = sc.time.frame_dt / sc.time.substeps;
-  s.fixed = select_fixed_points(mesh, sc.fixed);
+  s.fixed = select_fixed_points(meshes, sc.fixed);
   s.initial_velocity = sc.initial.velocity;
   s.initial_angular_velocity = sc.initial.angular_velocity;
+  return s;
+}
+
+SpaceAdaptivitySettings space_settings(const Scenario& sc) {
+  SpaceAdaptivitySettings s;
+  s.enabled = sc.space.enabled;
+  s.refine_above = sc.space.refine_above;
+  s.coarsen_below = sc.space.coarsen_below;
+  if (sc.space.max_level >= 0) s.max_level = sc.space.max_level;
+  s.max_active_points = sc.space.max_active_points;
+  s.min_dwell_frames = sc.space.min_dwell_frames;
   return s;
 }
 

@@ -1,14 +1,17 @@
 #pragma once
-// Translation of the validated scenario into the physics setup of one level.
+// Translation of the validated scenario into the physics setup of the levels.
 #include "scenario/scenario.hpp"
-#include "simulation/level_simulation.hpp"
+#include "simulation/hierarchical_simulation.hpp"
+#include "simulation/space_adaptivity.hpp"
 
 namespace mrsim {
 
 MaterialLaw material_law(const MaterialSpec& spec);
 
-/// Step dt = frame_dt / substeps; fixed points selected on `mesh` (may throw InputError).
-LevelSetup level_setup(const Scenario& scenario, const TetMesh& mesh);
+/// Step dt = frame_dt / substeps; fixed points selected on every level (may throw InputError).
+HierarchySetup hierarchy_setup(const Scenario& scenario, const std::vector<const TetMesh*>& meshes);
+
+SpaceAdaptivitySettings space_settings(const Scenario& scenario);
 
 /// Largest step the explicit schemes are safe with on this level: 0.5 × shortest edge / c_p
 /// (validation.md §2.7, measured factor 0.62–0.76), doubled for the semi-implicit step.

@@ -14,9 +14,8 @@
 #include "io/vtk_series_writer.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mrsim/version.hpp"
-#include "physics/laplacian_criterion.hpp"
-#include "simulation/diagnostics.hpp"
 #include "simulation/divergence.hpp"
+#include "simulation/hierarchy_diagnostics.hpp"
 #include "simulation/level_setup_from_scenario.hpp"
 
 namespace mrsim {
@@ -38,11 +37,20 @@ std::string utc_now_iso8601() {
   return buf;
 }
 
-TetMesh load_level_mesh(const Scenario& sc, size_t level) {
-  MeshReadReport report;
-  TetMesh mesh = read_tet_mesh(sc.levels[level].mesh, sc.units, &report);
-  for (const std::string& w : report.warnings) warn(w);
-  return mesh;
+std::vector<TetMesh> load_meshes(const Scenario& sc) {
+  std::vector<TetMesh> meshes;
+  for (const LevelSpec& level : sc.levels) {
+    MeshReadReport report;
+    meshes.push_back(read_tet_mesh(level.mesh, sc.units, &report));
+    for (const std::string& w : report.warnings) warn(w);
+  }
+  return meshes;
+}
+
+std::vector<const TetMesh*> pointers(const std::vector<TetMesh>& meshes) {
+  std::vector<const TetMesh*> p;
+  for (const TetMesh& m : meshes) p.push_back(&m);
+  return p;
 }
 
 int frame_count(const TimeSpec& t) {
@@ -57,49 +65,64 @@ int frame_count(const TimeSpec& t) {
   return static_cast<int>(frames);
 }
 
-void warn_if_unstable(const LevelSimulation& sim, Integrator integrator) {
-  const double limit = recommended_max_dt(sim.model(), integrator);
-  if (sim.dt() > limit) {
+// Every level that may become active must be stable at the single step of issue 2.
+void warn_if_unstable(const HierarchicalSimulation& sim, const HierarchySetup& setup,
+                      int max_level) {
+  for (int l = 0; l <= max_level; ++l) {
+    const double limit = recommended_max_dt(sim.model(l), setup.integrator);
+    if (setup.dt <= limit) continue;
     std::ostringstream os;
-    os << "time step " << sim.dt() << " s (frame_dt / substeps) exceeds the stable estimate "
-       << limit << " s of this mesh (0.5 x shortest edge / P-wave speed"
-       << (integrator == Integrator::SemiImplicit ? ", x2 for semi_implicit" : "")
-       << "); raise time.substeps to at least " << std::ceil(sim.dt() / limit) << "x its value";
+    os << "level " << l << ": time step " << setup.dt
+       << " s (frame_dt / substeps) exceeds the stable estimate " << limit
+       << " s of this mesh (0.5 x shortest edge / P-wave speed"
+       << (setup.integrator == Integrator::SemiImplicit ? ", x2 for semi_implicit" : "")
+       << "); raise time.substeps to at least " << std::ceil(setup.dt / limit) << "x its value";
     warn(os.str());
   }
 }
 
-// Everything written per display frame for the single level of issue 2.
+// Everything written per display frame: one block / status row per level.
 class FrameWriter {
  public:
-  FrameWriter(const Scenario& sc, const LevelSimulation& sim)
-      : sc_(sc), sim_(sim), n_(sim.model().num_points()) {
-    status_.assign(n_, static_cast<std::int8_t>(PointStatus::Active));
-    time_level_.assign(n_, 0);
+  FrameWriter(const Scenario& sc, HierarchicalSimulation& sim, const SpaceAdaptivity& adapt)
+      : sc_(sc), sim_(sim), adapt_(adapt), L_(sim.num_levels()) {
+    status_.resize(L_);
+    force_.resize(L_);
+    time_level_.resize(L_);
+    std::vector<const TetMesh*> meshes;
+    for (int l = 0; l < L_; ++l) {
+      status_[l].assign(sim.model(l).num_points(), 0);
+      force_[l].assign(sim.model(l).num_points(), Vec3::Zero());
+      time_level_[l].assign(sim.model(l).num_points(), 0);
+      meshes.push_back(sim.model(l).mesh);
+    }
     std::filesystem::create_directories(sc.output.dir);
     write_text(sc.output.dir / "scenario.yaml", resolved_yaml(sc));
-    Hdf5LogHeader header{kVersion, kGitRevision, resolved_yaml(sc), utc_now_iso8601(),
-                         {sim.model().mesh}};
+    Hdf5LogHeader header{kVersion, kGitRevision, resolved_yaml(sc), utc_now_iso8601(), meshes};
     log_ = std::make_unique<Hdf5Log>(sc.output.dir / "log.h5", header);
     if (sc.output.vtk) vtk_ = std::make_unique<VtkSeriesWriter>(sc.output.dir);
   }
 
-  void write(int frame, double time, double frame_wall, double kinetic, double elastic) {
+  void write(int frame, double time, double frame_wall, const Energies& e) {
     FrameRecord rec;
     rec.frame = frame;
     rec.time = time;
-    rec.kinetic_energy = kinetic;
-    rec.elastic_energy = elastic;
+    rec.kinetic_energy = e.kinetic;
+    rec.elastic_energy = e.elastic;
     rec.wall_time = frame_wall;
-    rec.active = {n_};
-    rec.ghosts = {0};
-    rec.force_evaluations = {sim_.force_evaluations()};
-    rec.status = {std::span<const std::int8_t>(status_)};
+    for (int l = 0; l < L_; ++l) {
+      fill_status(l);
+      rec.active.push_back(static_cast<std::int64_t>(sim_.lists().active(l).size()));
+      rec.ghosts.push_back(static_cast<std::int64_t>(sim_.lists().ghost_sub(l).size() +
+                                                     sim_.lists().ghost_iface(l).size()));
+      rec.force_evaluations.push_back(sim_.force_evaluations(l));
+      rec.status.push_back(std::span<const std::int8_t>(status_[l]));
+    }
     log_->append_frame(rec);
     if (vtk_ && frame % sc_.output.every == 0) write_vtk(frame, time);
   }
 
-  void event(int frame, const std::string& kind) { log_->append_event(frame, kind, 0, -1); }
+  void event(const HierarchyEvent& e) { log_->append_event(e.frame, e.kind, e.level, e.point); }
   void close() { log_->close(); }
 
  private:
@@ -109,27 +132,42 @@ class FrameWriter {
     if (!out) throw RunError("cannot write " + file.string());
   }
 
+  void fill_status(int l) {
+    for (int p = 0; p < sim_.model(l).num_points(); ++p) {
+      const NodeState s = sim_.hierarchy().state(l, p);
+      status_[l][p] = static_cast<std::int8_t>(
+          s == NodeState::Active ? PointStatus::Active
+          : s == NodeState::Inactive ? PointStatus::Inactive : PointStatus::Ghost);
+    }
+  }
+
   void write_vtk(int frame, double time) {
-    laplacian_criterion(sim_.model(), sim_.state().u.data(), criterion_);
-    const PointState& s = sim_.state();
-    LevelFrameView view;
-    view.mesh = sim_.model().mesh;
-    view.displacement = s.u;
-    view.velocity = s.v;
-    view.force = s.f;
-    view.status = status_;
-    view.time_level = time_level_;
-    view.criterion = criterion_;
-    view.mass = sim_.model().mass;
-    vtk_->write_frame(frame, time, std::span<const LevelFrameView>(&view, 1));
+    sim_.fill_inactive();  // every level shows the whole deformed object
+    std::vector<LevelFrameView> views(L_);
+    for (int l = 0; l < L_; ++l) {
+      const PointState& s = sim_.state(l);
+      std::fill(force_[l].begin(), force_[l].end(), Vec3::Zero());
+      for (int p : sim_.lists().active(l)) force_[l][p] = s.f[p];  // only active points have one
+      LevelFrameView& v = views[l];
+      v.mesh = sim_.model(l).mesh;
+      v.displacement = s.u;
+      v.velocity = s.v;
+      v.force = force_[l];
+      v.status = status_[l];
+      v.time_level = time_level_[l];
+      v.criterion = adapt_.criterion(l);
+      v.mass = sim_.model(l).mass;
+    }
+    vtk_->write_frame(frame, time, views);
   }
 
   const Scenario& sc_;
-  const LevelSimulation& sim_;
-  std::int64_t n_;
-  std::vector<std::int8_t> status_;
-  std::vector<std::int32_t> time_level_;
-  std::vector<double> criterion_;
+  HierarchicalSimulation& sim_;
+  const SpaceAdaptivity& adapt_;
+  int L_;
+  std::vector<std::vector<std::int8_t>> status_;
+  std::vector<std::vector<Vec3>> force_;
+  std::vector<std::vector<std::int32_t>> time_level_;
   std::unique_ptr<Hdf5Log> log_;
   std::unique_ptr<VtkSeriesWriter> vtk_;
 };
@@ -137,13 +175,14 @@ class FrameWriter {
 struct RunState {
   int frames_done = 0;
   double max_displacement = 0;
-  double kinetic = 0, elastic = 0;
+  Energies energies;
   std::string status = "completed";
   std::string message;
+  std::int64_t splits = 0, merges = 0;
 };
 
-nlohmann::json summary_json(const Scenario& sc, const LevelSimulation& sim, const RunState& st,
-                            const RunSummary& sum) {
+nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& sim,
+                            const RunState& st, const RunSummary& sum) {
   nlohmann::json j;
   j["name"] = sc.name;
   j["status"] = st.status;
@@ -154,25 +193,29 @@ nlohmann::json summary_json(const Scenario& sc, const LevelSimulation& sim, cons
   j["simulated_time"] = st.frames_done * sc.time.frame_dt;
   j["steps"] = sum.steps;
   j["wall_time"] = sum.wall_time;
-  j["force_evaluations"] = {sim.force_evaluations()};
-  j["final_active"] = {sim.model().num_points()};
-  j["final_ghosts"] = {0};
+  j["splits"] = st.splits;
+  j["merges"] = st.merges;
+  for (int l = 0; l < sim.num_levels(); ++l) {
+    j["force_evaluations"].push_back(sim.force_evaluations(l));
+    j["final_active"].push_back(sim.lists().active(l).size());
+    j["final_ghosts"].push_back(sim.lists().ghost_sub(l).size() + sim.lists().ghost_iface(l).size());
+    j["points"].push_back(sim.model(l).num_points());
+    j["tets"].push_back(sim.model(l).num_tets());
+  }
   j["max_displacement"] = st.max_displacement;
   j["peak_tool_force"] = nullptr;  // no tool before issue 6
-  j["final_kinetic_energy"] = st.kinetic;
-  j["final_elastic_energy"] = st.elastic;
-  j["points"] = {sim.model().num_points()};
-  j["tets"] = {sim.model().num_tets()};
+  j["final_kinetic_energy"] = st.energies.kinetic;
+  j["final_elastic_energy"] = st.energies.elastic;
   return j;
 }
 
 }  // namespace
 
 void check_scenario_inputs(const Scenario& sc) {
-  for (size_t l = 0; l < sc.levels.size(); ++l) {
-    const TetMesh mesh = load_level_mesh(sc, l);
-    const LevelSetup setup = level_setup(sc, mesh);
-    const LevelModel model = build_level_model(mesh, setup.law);
+  const std::vector<TetMesh> meshes = load_meshes(sc);
+  const HierarchySetup setup = hierarchy_setup(sc, pointers(meshes));
+  for (size_t l = 0; l < meshes.size(); ++l) {
+    const LevelModel model = build_level_model(meshes[l], setup.law);
     const double limit = recommended_max_dt(model, setup.integrator);
     if (setup.dt > limit) {
       std::ostringstream os;
@@ -185,41 +228,50 @@ void check_scenario_inputs(const Scenario& sc) {
 
 RunSummary run_scenario(const Scenario& sc, const RunOptions& options) {
   const auto t0 = Clock::now();
-  const TetMesh mesh = load_level_mesh(sc, 0);  // issue 2: one level
-  LevelSimulation sim(mesh, level_setup(sc, mesh));
-  warn_if_unstable(sim, sc.time.integrator);
+  const std::vector<TetMesh> meshes = load_meshes(sc);
+  const HierarchySetup setup = hierarchy_setup(sc, pointers(meshes));
+  HierarchicalSimulation sim(pointers(meshes), setup);
+  SpaceAdaptivity adapt(space_settings(sc), sim);
+  warn_if_unstable(sim, setup, sc.space.enabled ? sim.num_levels() - 1 : 0);
   const DivergenceGuard guard =
-      DivergenceGuard::for_level(sim.model(), sc.time.divergence_energy_factor);
+      DivergenceGuard::for_level(sim.model(0), sc.time.divergence_energy_factor);
   const int frames = frame_count(sc.time);
 
-  FrameWriter writer(sc, sim);
+  FrameWriter writer(sc, sim, adapt);
   RunState st;
   RunSummary sum;
-  st.kinetic = kinetic_energy(sim.state(), sim.model().mass);
-  st.elastic = sim.elastic_energy();
-  writer.write(0, 0.0, 0.0, st.kinetic, st.elastic);
+  std::vector<HierarchyEvent> events;
+  adapt.evaluate(sim);
+  st.energies = hierarchy_energies(sim);
+  writer.write(0, 0.0, 0.0, st.energies);
   for (int frame = 1; frame <= frames; ++frame) {
     const auto tf = Clock::now();
     sim.advance(sc.time.substeps);
     sum.steps += sc.time.substeps;
     const double time = frame * sc.time.frame_dt;
-    st.kinetic = kinetic_energy(sim.state(), sim.model().mass);
-    st.elastic = sim.elastic_energy();
-    const double internal = st.elastic + internal_kinetic_energy(sim.state(), sim.model().mass);
-    if (auto why = guard.check(sim.state(), internal)) {
+    st.energies = hierarchy_energies(sim);
+    if (auto why = guard.check(sim, st.energies.elastic + st.energies.internal_kinetic)) {
       std::ostringstream os;
       os << "simulation diverged at frame " << frame << " (t = " << time << " s): " << *why;
       st.status = "diverged";
       st.message = os.str();
-      writer.event(frame, "divergence");
+      writer.event({frame, "divergence", -1, -1});
       writer.close();
       sum.frames = st.frames_done;
       sum.wall_time = seconds_since(t0);
       write_json_file(sc.output.dir / "summary.json", summary_json(sc, sim, st, sum));
       throw RunError(st.message);
     }
-    st.max_displacement = std::max(st.max_displacement, max_displacement(sim.state()));
-    writer.write(frame, time, seconds_since(tf), st.kinetic, st.elastic);
+    // Split/merge at the frame boundary (method.md §3.3): the frame written shows the new state.
+    events.clear();
+    adapt.update(sim, frame, events);
+    for (const HierarchyEvent& e : events) {
+      st.splits += e.kind == "split";
+      st.merges += e.kind == "merge";
+      writer.event(e);
+    }
+    st.max_displacement = std::max(st.max_displacement, max_active_displacement(sim));
+    writer.write(frame, time, seconds_since(tf), st.energies);
     st.frames_done = frame;
     if (options.progress) options.progress({frame, frames, time, seconds_since(t0)});
   }

@@ -1,0 +1,61 @@
+#include "simulation/hierarchy_diagnostics.hpp"
+
+#include <algorithm>
+
+#include "physics/internal_force.hpp"
+#include "physics/stress.hpp"
+
+namespace mrsim {
+
+namespace {
+
+double level_elastic_energy(const HierarchicalSimulation& sim, int l) {
+  const LevelModel& m = sim.model(l);
+  const auto& active = sim.lists().active(l);
+  if (active.empty()) return 0;
+  std::vector<unsigned char> mark(m.num_tets(), 0);
+  std::vector<int> tets;
+  live_tets(m, IndexSet::of(active), mark, tets);
+  const Vec3* u = sim.state(l).u.data();
+  double e = 0;
+  for (int t : tets) {
+    int n = 0;
+    for (int v : m.geo.tets[t]) n += sim.hierarchy().state(l, v) == NodeState::Active;
+    const Mat3 G = tet_gradient(m.geo.grad[t], m.geo.tets[t], u);
+    const Mat3 E = m.law.strain == StrainMeasure::GreenLagrange ? green_strain(G) : cauchy_strain(G);
+    e += m.geo.volume[t] * energy_density(E, m.law) * n / 4.0;
+  }
+  return e;
+}
+
+}  // namespace
+
+Energies hierarchy_energies(const HierarchicalSimulation& sim) {
+  Energies e;
+  double mass = 0;
+  Vec3 momentum = Vec3::Zero();
+  for (int l = 0; l < sim.num_levels(); ++l) {
+    const auto& m = sim.model(l).mass;
+    const auto& v = sim.state(l).v;
+    for (int p : sim.lists().active(l)) {
+      e.kinetic += 0.5 * m[p] * v[p].squaredNorm();
+      mass += m[p];
+      momentum += m[p] * v[p];
+    }
+    e.elastic += level_elastic_energy(sim, l);
+  }
+  const Vec3 vcm = mass > 0 ? Vec3(momentum / mass) : Vec3::Zero();
+  for (int l = 0; l < sim.num_levels(); ++l)
+    for (int p : sim.lists().active(l))
+      e.internal_kinetic += 0.5 * sim.model(l).mass[p] * (sim.state(l).v[p] - vcm).squaredNorm();
+  return e;
+}
+
+double max_active_displacement(const HierarchicalSimulation& sim) {
+  double d = 0;
+  for (int l = 0; l < sim.num_levels(); ++l)
+    for (int p : sim.lists().active(l)) d = std::max(d, sim.state(l).u[p].norm());
+  return d;
+}
+
+}  // namespace mrsim
