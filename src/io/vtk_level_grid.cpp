@@ -1,4 +1,5 @@
 #include "io/vtk_level_grid.hpp"
+#include "io/vtk_tetra_cells.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellType.h>
@@ -25,23 +26,6 @@ vtkSmartPointer<vtkPoints> deformed_points(const LevelFrameView& view) {
     points->SetPoint(static_cast<vtkIdType>(i), x.x(), x.y(), x.z());
   }
   return points;
-}
-
-vtkSmartPointer<vtkCellArray> tetra_cells(const TetMesh& mesh) {
-  // Offsets + connectivity (the VTK 9 layout) filled directly: no per-cell insertion.
-  const auto count = static_cast<vtkIdType>(mesh.tets.size());
-  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
-  offsets->SetNumberOfValues(count + 1);
-  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
-  connectivity->SetNumberOfValues(4 * count);
-  for (vtkIdType t = 0; t < count; ++t) {
-    offsets->SetValue(t, 4 * t);
-    for (int c = 0; c < 4; ++c) connectivity->SetValue(4 * t + c, mesh.tets[t][c]);
-  }
-  offsets->SetValue(count, 4 * count);
-  auto cells = vtkSmartPointer<vtkCellArray>::New();
-  cells->SetData(offsets, connectivity);
-  return cells;
 }
 
 vtkSmartPointer<vtkDoubleArray> vector_array(const char* name, std::span<const Vec3> values) {

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/vtk_error_capture.hpp"
+#include "io/vtk_tetra_cells.hpp"
 
 namespace mrsim {
 namespace {
@@ -22,18 +23,7 @@ vtkSmartPointer<vtkUnstructuredGrid> make_grid(const TetMesh& mesh) {
   for (std::size_t i = 0; i < mesh.points.size(); ++i) {
     points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].data());
   }
-  const auto count = static_cast<vtkIdType>(mesh.tets.size());
-  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
-  offsets->SetNumberOfValues(count + 1);
-  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
-  connectivity->SetNumberOfValues(4 * count);
-  for (vtkIdType t = 0; t < count; ++t) {
-    offsets->SetValue(t, 4 * t);
-    for (int c = 0; c < 4; ++c) connectivity->SetValue(4 * t + c, mesh.tets[t][c]);
-  }
-  offsets->SetValue(count, 4 * count);
-  auto cells = vtkSmartPointer<vtkCellArray>::New();
-  cells->SetData(offsets, connectivity);
+  const auto cells = tetra_cells(mesh);
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   grid->SetPoints(points);
   grid->SetCells(VTK_TETRA, cells);
