@@ -5,7 +5,7 @@
 #include <cstring>
 #include <random>
 
-#include "mesh/box_mesh.hpp"
+#include "hierarchy/hierarchy_fixture.hpp"
 #include "simulation/hierarchical_simulation.hpp"
 #include "simulation/level_simulation.hpp"
 
@@ -15,18 +15,7 @@ namespace {
 
 struct Box3 {
   std::vector<TetMesh> meshes;
-  Box3() {
-    std::mt19937 rng(8);
-    const int cells[3][3] = {{3, 2, 2}, {6, 4, 3}, {12, 7, 5}};
-    for (const auto& c : cells) {
-      TetMesh m = make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.06, 0.04), c[0], c[1], c[2]);
-      std::uniform_real_distribution<double> d(-0.2, 0.2);
-      const Vec3 h(0.1 / c[0], 0.06 / c[1], 0.04 / c[2]);
-      for (Vec3& p : m.points)
-        if (interior(p)) p += Vec3(d(rng) * h.x(), d(rng) * h.y(), d(rng) * h.z());
-      meshes.push_back(std::move(m));
-    }
-  }
+  Box3() : meshes(mrsim::testing::jittered_box_levels({{3, 2, 2}, {6, 4, 3}, {12, 7, 5}}, 8, 0.2)) {}
   static bool interior(const Vec3& p) {
     return p.x() > 1e-9 && p.x() < 0.1 - 1e-9 && p.y() > 1e-9 && p.y() < 0.06 - 1e-9 &&
            p.z() > 1e-9 && p.z() < 0.04 - 1e-9;

@@ -3,9 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
-#include "mesh/box_mesh.hpp"
+#include "hierarchy/hierarchy_fixture.hpp"
 #include "simulation/space_adaptivity.hpp"
 
 using namespace mrsim;
@@ -13,20 +12,7 @@ using namespace mrsim;
 namespace {
 
 std::vector<TetMesh> three_boxes() {
-  std::vector<TetMesh> meshes;
-  std::mt19937 rng(8);
-  const int cells[3][3] = {{4, 3, 2}, {8, 5, 4}, {16, 10, 7}};
-  for (const auto& c : cells) {
-    TetMesh m = make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.06, 0.04), c[0], c[1], c[2]);
-    std::uniform_real_distribution<double> d(-0.15, 0.15);
-    const Vec3 h(0.1 / c[0], 0.06 / c[1], 0.04 / c[2]);
-    for (Vec3& p : m.points)
-      if (p.x() > 1e-9 && p.x() < 0.1 - 1e-9 && p.y() > 1e-9 && p.y() < 0.06 - 1e-9 &&
-          p.z() > 1e-9 && p.z() < 0.04 - 1e-9)
-        p += Vec3(d(rng) * h.x(), d(rng) * h.y(), d(rng) * h.z());
-    meshes.push_back(std::move(m));
-  }
-  return meshes;
+  return mrsim::testing::jittered_box_levels({{4, 3, 2}, {8, 5, 4}, {16, 10, 7}}, 8, 0.15);
 }
 
 // A dent of depth `depth` under a point of the top face.
