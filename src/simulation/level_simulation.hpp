@@ -1,12 +1,11 @@
 #pragma once
-// One mesh level with every point active (issue 2): precomputed model, state, force field and
-// integrator. The multiresolution hierarchy (issue 4) will drive several of these.
+// One mesh level with every point active: the single-level view used by validation tests.
+// It is a one-level HierarchicalSimulation (no second copy of the setup), so what the tests
+// validate is exactly what `mrsim run` integrates.
 #include <cstdint>
-#include <memory>
+#include <vector>
 
-#include "physics/level_model.hpp"
-#include "simulation/level_force_field.hpp"
-#include "time/stepper.hpp"
+#include "simulation/hierarchical_simulation.hpp"
 
 namespace mrsim {
 
@@ -24,22 +23,19 @@ class LevelSimulation {
  public:
   LevelSimulation(const TetMesh& mesh, const LevelSetup& setup);
   /// Advances `steps` steps of the setup's dt.
-  void advance(int steps);
+  void advance(int steps) { sim_.advance(steps); }
 
-  const LevelModel& model() const { return model_; }
-  const PointState& state() const { return state_; }
-  PointState& state() { return state_; }
+  const LevelModel& model() const { return sim_.model(0); }
+  const PointState& state() const { return sim_.state(0); }
+  PointState& state() { return sim_.state(0); }
   double dt() const { return dt_; }
-  std::int64_t force_evaluations() const { return stepper_->force_evaluations(0); }
+  std::int64_t force_evaluations() const { return sim_.force_evaluations(0); }
   double elastic_energy() const;
 
  private:
-  void set_initial_velocity(const LevelSetup& setup);
-  LevelModel model_;
-  PointState state_;
+  static HierarchySetup one_level(const LevelSetup& setup);
   double dt_;
-  std::unique_ptr<LevelForceField> forces_;
-  std::unique_ptr<Stepper> stepper_;
+  HierarchicalSimulation sim_;
 };
 
 }  // namespace mrsim
