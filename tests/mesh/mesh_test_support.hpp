@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "support/scratch_and_shared.hpp"
 #include "mesh/mesh_reader.hpp"
 
 namespace mrsim::test {
@@ -24,36 +25,8 @@ namespace fs = std::filesystem;
 
 inline fs::path fixture_dir() { return fs::path(MRSIM_SOURCE_DIR) / "tests" / "data" / "mesh"; }
 inline fs::path fixture(const std::string& name) { return fixture_dir() / name; }
-inline fs::path shared_data() { return fs::path(MRSIM_SHARED_DIR) / "data"; }
 
-#define MRSIM_REQUIRE_SHARED_DATA()                                                   \
-  do {                                                                                \
-    if (!std::filesystem::exists(::mrsim::test::shared_data()))                       \
-      GTEST_SKIP() << "shared data not found at " << ::mrsim::test::shared_data();    \
-  } while (0)
 
-/// A fresh directory for one test, removed afterwards.
-class ScratchDir {
- public:
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = "mrsim_mesh_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
-                       std::to_string(getpid());
-    std::replace(name.begin(), name.end(), '/', '_');  // parameterized tests: "Suite/Test/3"
-    dir_ = fs::temp_directory_path() / name;
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  fs::path operator/(const std::string& name) const { return dir_ / name; }
-  const fs::path& path() const { return dir_; }
-
- private:
-  fs::path dir_;
-};
 
 inline void write_file(const fs::path& path, const std::string& bytes) {
   // Unlink first: ext4 flushes a file truncated by a rewrite when it is closed (auto_da_alloc),

@@ -10,45 +10,14 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "support/scratch_and_shared.hpp"
 
 namespace mrsim::test {
 
 namespace fs = std::filesystem;
 
-inline fs::path source_dir() { return fs::path(MRSIM_SOURCE_DIR); }
-inline fs::path shared_data() { return fs::path(MRSIM_SHARED_DIR) / "data"; }
 
-#define MRSIM_REQUIRE_SHARED_DATA()                                                \
-  do {                                                                             \
-    if (!std::filesystem::exists(::mrsim::test::shared_data()))                    \
-      GTEST_SKIP() << "shared data not found at " << ::mrsim::test::shared_data(); \
-  } while (0)
 
-/// A fresh folder for one test, removed afterwards.
-class ScratchDir {
- public:
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("mrsim_meshing_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
-             std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  const fs::path& path() const { return path_; }
-  fs::path file(const std::string& name) const { return path_ / name; }
-  fs::path write(const std::string& name, const std::string& contents) const {
-    std::ofstream(path_ / name, std::ios::binary) << contents;
-    return path_ / name;
-  }
-
- private:
-  fs::path path_;
-};
 
 /// A unit cube [0,1]^3 as OFF text, outward oriented; `extra` is appended to the faces.
 inline std::string cube_off(const std::string& first_vertex = "0 0 0", int faces = 12,

@@ -27,17 +27,26 @@ void impose(HierarchicalSimulation& sim, double depth) {
   sim.refresh_ghosts();
 }
 
+HierarchySetup soft_material() {
+  HierarchySetup hs;
+  hs.law.lambda = 5.0e4;
+  hs.law.mu = 2.0e4;
+  return hs;
+}
+
+SpaceAdaptivitySettings refine_at(double refine_above) {
+  SpaceAdaptivitySettings s;
+  s.enabled = true;
+  s.refine_above = refine_above;
+  return s;
+}
+
 }  // namespace
 
 TEST(SpaceAdaptivity, ADentRefinesUnderItAndCoarsensBackWhenReleased) {
   const auto meshes = three_boxes();
-  HierarchySetup hs;
-  hs.law.lambda = 5.0e4;
-  hs.law.mu = 2.0e4;
-  HierarchicalSimulation sim({&meshes[0], &meshes[1], &meshes[2]}, hs);
-  SpaceAdaptivitySettings s;
-  s.enabled = true;
-  s.refine_above = 0.02;
+  HierarchicalSimulation sim({&meshes[0], &meshes[1], &meshes[2]}, soft_material());
+  SpaceAdaptivitySettings s = refine_at(0.02);
   s.coarsen_below = 0.005;
   s.min_dwell_frames = 3;
   SpaceAdaptivity adapt(s, sim);
@@ -68,13 +77,8 @@ TEST(SpaceAdaptivity, ADentRefinesUnderItAndCoarsensBackWhenReleased) {
 
 TEST(SpaceAdaptivity, ActivePointCapIsRespected) {
   const auto meshes = three_boxes();
-  HierarchySetup hs;
-  hs.law.lambda = 5.0e4;
-  hs.law.mu = 2.0e4;
-  HierarchicalSimulation sim({&meshes[0], &meshes[1], &meshes[2]}, hs);
-  SpaceAdaptivitySettings s;
-  s.enabled = true;
-  s.refine_above = 0.02;
+  HierarchicalSimulation sim({&meshes[0], &meshes[1], &meshes[2]}, soft_material());
+  SpaceAdaptivitySettings s = refine_at(0.02);
   s.max_active_points = 150;
   SpaceAdaptivity adapt(s, sim);
   std::vector<HierarchyEvent> events;
