@@ -60,11 +60,12 @@ void check_prefix(const std::filesystem::path& prefix) {
 
 void print_level(const LevelRecord& r, std::size_t k) {
   const TetQuality& q = r.level.quality;
-  char line[200];
+  char line[256];
   std::snprintf(line, sizeof line, "L%zu: %zu tets (asked %zu%s), %zu points, dihedral %.1f..%.1f deg, "
-                "mean radius ratio %.3f, %.1f s", k, q.tets, r.requested_tets,
+                "mean radius ratio %.3f%s, %.1f s", k, q.tets, r.requested_tets,
                 r.level.within_tolerance ? "" : ", outside +-20%", q.points, q.min_dihedral_deg,
-                q.max_dihedral_deg, q.mean_radius_ratio, r.seconds);
+                q.max_dihedral_deg, q.mean_radius_ratio,
+                r.level.simplified_surface ? ", simplified surface (gmsh could not remesh it)" : "", r.seconds);
   info(line);
 }
 

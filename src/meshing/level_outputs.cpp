@@ -23,7 +23,7 @@ Json radius_ratio_json(const TetQuality& q) {
 
 Json level_json(const LevelRecord& r, std::size_t k, double reference_volume, const std::filesystem::path& prefix) {
   const TetQuality& q = r.level.quality;
-  return {
+  Json level = {
       {"level", k},
       {"file", level_file(prefix, k).filename().string()},
       {"requested_tets", r.requested_tets},
@@ -45,6 +45,9 @@ Json level_json(const LevelRecord& r, std::size_t k, double reference_volume, co
       {"candidates", r.level.candidates},
       {"failed_attempts", r.level.failed_attempts},
   };
+  // Only levels made by the fallback say so: the reports of other inputs keep their bytes.
+  if (r.level.simplified_surface) level["surface"] = "simplified by edge collapses, kept by gmsh (not remeshed)";
+  return level;
 }
 
 Json resolution_ratios(const std::vector<LevelRecord>& levels) {
@@ -84,8 +87,7 @@ std::string levels_snippet(const std::vector<LevelRecord>& levels, const std::st
   std::ostringstream out;
   out << "# Levels of " << source_name << ", coarse to fine, written by mrsim mesh " << kVersion << ".\n"
       << "# The `object:` block of a scenario; mesh paths are relative to this file's folder.\n"
-      << "# mrsim " << kVersion << " runs one level (object.levels takes 1 entry until the hierarchy,\n"
-      << "# issue 4, lands): keep the level you want and delete the others for now.\n"
+      << "# It lists every level (a scenario takes 1 to 7) and can be used as it is.\n"
       << "object:\n  levels:\n";
   for (std::size_t k = 0; k < levels.size(); ++k) {
     const TetQuality& q = levels[k].level.quality;

@@ -70,24 +70,24 @@ int shared_vertices(const Triangle& a, const Triangle& b) {
 }
 
 /// Corners of t rotated so that `first` comes first (it keeps the triangle's orientation).
-TriangleCorners corners_from(const SurfaceMesh& s, const Triangle& t, int first) {
+TriangleCorners corners_from(const std::vector<Vec3>& points, const Triangle& t, int first) {
   int k = 0;
   while (t[k] != first) ++k;
-  return {s.points[t[k]], s.points[t[(k + 1) % 3]], s.points[t[(k + 2) % 3]]};
+  return {points[t[k]], points[t[(k + 1) % 3]], points[t[(k + 2) % 3]]};
 }
 
-bool pair_intersects(const SurfaceMesh& s, int i, int j) {
-  const Triangle& a = s.triangles[i];
-  const Triangle& b = s.triangles[j];
+}  // namespace
+
+bool triangles_meet(const std::vector<Vec3>& points, const Triangle& a, const Triangle& b) {
   switch (shared_vertices(a, b)) {
     case 0:
-      return disjoint_triangles_meet(corners_from(s, a, a[0]), corners_from(s, b, b[0]));
+      return disjoint_triangles_meet(corners_from(points, a, a[0]), corners_from(points, b, b[0]));
     case 1: {
       int common = a[0];
       for (int u : a) {
         if (std::count(b.begin(), b.end(), u) > 0) common = u;
       }
-      return corner_sharing_triangles_overlap(corners_from(s, a, common), corners_from(s, b, common));
+      return corner_sharing_triangles_overlap(corners_from(points, a, common), corners_from(points, b, common));
     }
     case 2:
       return false;  // edge neighbours: folds there are caught by the orientation check
@@ -95,8 +95,6 @@ bool pair_intersects(const SurfaceMesh& s, int i, int j) {
       return true;   // the same triangle twice
   }
 }
-
-}  // namespace
 
 SelfIntersections find_self_intersections(const SurfaceMesh& surface) {
   const int n = static_cast<int>(surface.triangles.size());
@@ -118,7 +116,7 @@ SelfIntersections find_self_intersections(const SurfaceMesh& surface) {
         if (!boxes[i].overlaps(boxes[j])) continue;
         // Test each pair once: in the cell holding the low corner of the boxes' overlap.
         if (grid.index(grid.cell_of(boxes[i].lo.cwiseMax(boxes[j].lo))) != c) continue;
-        if (!pair_intersects(surface, i, j)) continue;
+        if (!triangles_meet(surface.points, surface.triangles[i], surface.triangles[j])) continue;
         if (found.pairs++ < kExamples) found.first.emplace_back(i, j);
       }
     }

@@ -16,4 +16,9 @@ struct SelfIntersections {
 
 SelfIntersections find_self_intersections(const SurfaceMesh& surface);
 
+/// The exact test behind find_self_intersections, for two triangles of one surface: true when
+/// they meet anywhere else than along the vertices they share. Edge neighbours (two shared
+/// vertices) never count: folds across an edge are the orientation's business.
+bool triangles_meet(const std::vector<Vec3>& points, const Triangle& a, const Triangle& b);
+
 }  // namespace mrsim

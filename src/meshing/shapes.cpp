@@ -72,12 +72,12 @@ class ShapeSource : public GeometrySource {
  public:
   explicit ShapeSource(ShapeSpec spec) : spec_(std::move(spec)), name_(describe(spec_)) {
     GmshModel model("mrsim_shape_volume");
-    build(model);
+    build(model, 0.0);
     gmsh::model::occ::getMass(3, tag_, volume_);
     model.throw_on_errors("cannot measure " + name_);
   }
 
-  void build(GmshModel& model) const override {
+  void build(GmshModel& model, double /*size*/) const override {
     tag_ = build_shape(spec_);
     gmsh::model::occ::synchronize();
     model.throw_on_errors("cannot build " + name_);

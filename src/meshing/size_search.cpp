@@ -67,6 +67,11 @@ class Search {
     return best_size;
   }
 
+  bool found_any() const { return !candidates_.empty(); }
+  int failures() const { return failures_; }
+  const std::string& last_error() const { return last_error_; }
+
+  /// Throws InputError when no attempt succeeded.
   LevelMesh best() {
     if (candidates_.empty()) {
       throw InputError("cannot mesh " + source_.name() + " near " + std::to_string(static_cast<long>(target_)) +
@@ -98,15 +103,17 @@ class Search {
   std::string last_error_;
 };
 
+constexpr std::initializer_list<double> kFallbackFactors = {0.97, 1.03, 0.94, 1.06, 0.985, 1.015,
+                                                           0.955, 1.045, 0.925, 1.075, 0.91, 1.09};
+
 /// Edge length of a regular tet of volume V / N: a uniform mesh of that size has about N tets.
 double initial_size(double volume, std::size_t target) {
   return std::cbrt(6.0 * std::sqrt(2.0) * volume / static_cast<double>(target));
 }
 
-}  // namespace
-
-LevelMesh search_level(const GeometrySource& source, std::size_t target_tets, const SearchOptions& options) {
-  Search search(source, target_tets, options);
+/// The size search proper: secant steps on the size, then more tries around the best.
+void run_search(Search& search, const GeometrySource& source, std::size_t target_tets,
+                std::initializer_list<double> extra_factors) {
   double size = initial_size(source.volume(), target_tets);
   // Only gmsh's Delaunay pair: its output depends on the input alone, whereas the HXT path
   // (and the frontal 2-D mesher) changed with the process's heap history in our tests, which
@@ -115,8 +122,28 @@ LevelMesh search_level(const GeometrySource& source, std::size_t target_tets, co
   size = search.converge(algorithm, size);
   // More tries around the best size: a few surface triangles more or less change the volume
   // mesh's quality a lot (the thesis' observation).
-  for (double factor : {0.97, 1.03, 0.94, 1.06}) search.attempt({size * factor, algorithm});
-  return search.best();
+  for (double factor : extra_factors) search.attempt({size * factor, algorithm});
+}
+
+}  // namespace
+
+LevelMesh search_level(const GeometrySource& source, std::size_t target_tets, const SearchOptions& options) {
+  Search search(source, target_tets, options);
+  run_search(search, source, target_tets, {0.97, 1.03, 0.94, 1.06});
+  const GeometrySource* fallback = source.fallback();
+  if (search.found_any() || !fallback) return search.best();
+  Search second(*fallback, target_tets, options);
+  // Kept surfaces give tets whose worst angle varies much from one size to the next (each
+  // size is another simplified surface), and an attempt is cheap: try more sizes.
+  run_search(second, *fallback, target_tets, kFallbackFactors);
+  if (!second.found_any()) {
+    throw InputError("cannot mesh " + source.name() + " near " + std::to_string(target_tets) + " tets: " +
+                     search.last_error() + "; nor after simplifying its surface: " + second.last_error());
+  }
+  LevelMesh level = second.best();
+  level.failed_attempts += search.failures();
+  level.simplified_surface = true;
+  return level;
 }
 
 }  // namespace mrsim

@@ -32,9 +32,11 @@ struct LevelMesh {
   int candidates = 0;        // meshes made
   int failed_attempts = 0;   // gmsh errors (skipped)
   bool within_tolerance = false;
+  bool simplified_surface = false;  // made by the source's fallback (GeometrySource::fallback)
 };
 
-/// Throws InputError when gmsh fails at every size tried (the message carries gmsh's reason).
+/// When gmsh fails at every size tried and the source has a fallback, the same search runs on
+/// the fallback. Throws InputError when that fails too (the message carries gmsh's reasons).
 LevelMesh search_level(const GeometrySource& source, std::size_t target_tets,
                        const SearchOptions& options = {});
 

@@ -82,7 +82,7 @@ TetMesh mesh_solid(const GeometrySource& source, const MeshSettings& settings) {
     // at initialisation: reseeding here makes an attempt independent of those before it.
     std::srand(kRandomSeed);
     const SilencedOutput quiet;
-    source.build(model);
+    source.build(model, settings.size);
     gmsh::model::mesh::generate(3);
   }
   model.throw_on_errors("gmsh could not mesh " + source.name());
