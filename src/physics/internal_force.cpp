@@ -28,39 +28,47 @@ void cauchy_gather(const LevelModel& m, IndexSet points, const Vec3* u, const Ve
   }
 }
 
-// Per-tet nodal forces -V P ∇N_a (Green); the sum over a is zero up to rounding.
-inline void green_tet_forces(const LevelModel& m, int t, const Vec3* u, const Vec3* v,
+// Per-tet nodal forces -V P ∇N_a (P = σ + ν for Cauchy); the sum over a is zero up to rounding.
+inline void tet_nodal_forces(const LevelModel& m, int t, const Vec3* u, const Vec3* v,
                              TetGradients& out) {
   const TetGradients& g = m.geo.grad[t];
   const Tet& tet = m.geo.tets[t];
   const Mat3 G = tet_gradient(g, tet, u);
+  const bool green = m.law.strain == StrainMeasure::GreenLagrange;
   Mat3 P;
   if (m.law.damped()) {
     const Mat3 Gd = tet_gradient(g, tet, v);
-    P = green_piola(G, &Gd, m.law);
+    P = green ? green_piola(G, &Gd, m.law) : cauchy_stress(G, &Gd, m.law);
   } else {
-    P = green_piola(G, nullptr, m.law);
+    P = green ? green_piola(G, nullptr, m.law) : cauchy_stress(G, nullptr, m.law);
   }
   P *= -m.geo.volume[t];
   for (int a = 0; a < 4; ++a) out[a].noalias() = P * g[a];
 }
 
-void green_forces(const LevelModel& m, IndexSet points, IndexSet tets, const Vec3* u,
-                  const Vec3* v, Vec3* f, ForceWorkspace& ws) {
+// One pass over `tets`, then a per-point gather over the incident tets (each weighted by
+// weight[t] when given), so the sum order per point is fixed whatever the thread count.
+void tet_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets, const double* weight,
+                         const Vec3* u, const Vec3* v, Vec3* f, ForceWorkspace& ws) {
   const int nt = tets.count;
   const int n = points.count;
-  ws.reserve_for(m);
+  ws.reserve_for(m, true);
   TetGradients* tf = ws.tet_force.data();
 #pragma omp parallel if (n >= parallel_threshold())
   {
 #pragma omp for schedule(static)
-    for (int k = 0; k < nt; ++k) green_tet_forces(m, tets[k], u, v, tf[tets[k]]);
+    for (int k = 0; k < nt; ++k) tet_nodal_forces(m, tets[k], u, v, tf[tets[k]]);
 #pragma omp for schedule(static)
     for (int k = 0; k < n; ++k) {
       const int i = points[k];
       Vec3 fi = Vec3::Zero();
-      for (int s = m.adj.inc_start[i]; s < m.adj.inc_start[i + 1]; ++s)
-        fi += tf[m.adj.inc_tet[s]][m.adj.inc_local[s]];
+      for (int s = m.adj.inc_start[i]; s < m.adj.inc_start[i + 1]; ++s) {
+        const int t = m.adj.inc_tet[s];
+        if (!weight)
+          fi += tf[t][m.adj.inc_local[s]];
+        else if (weight[t] != 0)
+          fi += weight[t] * tf[t][m.adj.inc_local[s]];
+      }
       f[i] = fi;
     }
   }
@@ -68,8 +76,9 @@ void green_forces(const LevelModel& m, IndexSet points, IndexSet tets, const Vec
 
 }  // namespace
 
-void ForceWorkspace::reserve_for(const LevelModel& model) {
-  if (model.law.strain == StrainMeasure::GreenLagrange && tet_force.size() != model.geo.tets.size())
+void ForceWorkspace::reserve_for(const LevelModel& model, bool per_tet) {
+  if ((per_tet || model.law.strain == StrainMeasure::GreenLagrange) &&
+      tet_force.size() != model.geo.tets.size())
     tet_force.resize(model.geo.tets.size());
 }
 
@@ -84,7 +93,13 @@ void internal_forces(const LevelModel& model, IndexSet points, IndexSet tets, co
   if (model.law.strain == StrainMeasure::Cauchy)
     cauchy_gather(model, points, u, v, f);
   else
-    green_forces(model, points, tets, u, v, f, ws);
+    tet_pass_and_gather(model, points, tets, nullptr, u, v, f, ws);
+}
+
+void weighted_internal_forces(const LevelModel& model, IndexSet points, IndexSet tets,
+                              const double* tet_weight, const Vec3* u, const Vec3* v, Vec3* f,
+                              ForceWorkspace& ws) {
+  tet_pass_and_gather(model, points, tets, tet_weight, u, v, f, ws);
 }
 
 void live_tets(const LevelModel& m, IndexSet points, std::vector<unsigned char>& mark,

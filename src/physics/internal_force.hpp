@@ -12,8 +12,8 @@ namespace mrsim {
 
 /// Scratch memory reused across steps (no allocation in the step loop).
 struct ForceWorkspace {
-  std::vector<TetGradients> tet_force;  // Green: -V P ∇N_a per tet and local vertex
-  void reserve_for(const LevelModel& model);
+  std::vector<TetGradients> tet_force;  // -V P ∇N_a per tet and local vertex (Green, weighted)
+  void reserve_for(const LevelModel& model, bool per_tet = false);
 };
 
 /// f[i] = internal force on every point i of the level (overwrites f).
@@ -25,6 +25,14 @@ void internal_forces(const LevelModel& model, const Vec3* u, const Vec3* v, Vec3
 /// (see live_tets()); Cauchy ignores it. Cost O(points + tets).
 void internal_forces(const LevelModel& model, IndexSet points, IndexSet tets, const Vec3* u,
                      const Vec3* v, Vec3* f, ForceWorkspace& ws);
+
+/// Forces of a level the hierarchy simulates only in part (energy-consistent coupling,
+/// docs/hierarchy.md): f[i] = Σ_{t∋i} tet_weight[t] × (nodal force of t on i), for `points`
+/// (active points and ghosts). `tets` must hold every tet with a non-zero weight; other tets are
+/// skipped. Same stress as internal_forces() for both strain measures. Cost O(points + tets).
+void weighted_internal_forces(const LevelModel& model, IndexSet points, IndexSet tets,
+                              const double* tet_weight, const Vec3* u, const Vec3* v, Vec3* f,
+                              ForceWorkspace& ws);
 
 /// Tets incident to at least one of `points`, ascending, using `mark` (one byte per tet, all
 /// zero on entry and on return) to deduplicate. O(Σ incident tets).

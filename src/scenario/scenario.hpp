@@ -14,6 +14,7 @@
 #include "core/vec.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "physics/material_law.hpp"
+#include "hierarchy/coupling_kind.hpp"
 #include "time/integrator_kind.hpp"
 
 namespace mrsim {
@@ -61,6 +62,7 @@ struct SpaceAdaptivitySpec {
   int max_level = -1;                 // -1: the last level
   std::int64_t max_active_points = 0;  // 0: no cap
   int min_dwell_frames = 5;
+  Coupling coupling = Coupling::Energy;
 };
 
 struct OutputSpec {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "hierarchy/ghost_force_transfer.hpp"
 #include "simulation/diagnostics.hpp"
 
 namespace mrsim {
@@ -9,6 +10,8 @@ namespace mrsim {
 HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>& meshes,
                                                const HierarchySetup& setup) {
   const int L = static_cast<int>(meshes.size());
+  coupling_ = setup.coupling;
+  transfer_ = coupling_ == Coupling::Energy && L > 1;  // one level: no ghost, nothing to send
   std::vector<HierarchyLevel> levels;
   for (int l = 0; l < L; ++l) {
     models_.push_back(std::make_unique<LevelModel>(build_level_model(*meshes[l], setup.law)));
@@ -32,16 +35,23 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
         s.v[i] = setup.initial_velocity +
                  setup.initial_angular_velocity.cross(meshes[l]->points[i] - c);
     forces_.push_back(std::make_unique<LevelForceField>(*models_[l], setup.gravity));
-    forces_[l]->serve(&lists_->active(l));
+    if (transfer_)
+      forces_[l]->couple(hierarchy_.get(), lists_.get(), l);
+    else
+      forces_[l]->serve(&lists_->active(l));
     blocks[l].state = &s;
     blocks[l].forces = forces_[l].get();
     blocks[l].points = &lists_->active(l);
     if (setup.integrator == Integrator::SemiImplicit)
       blocks[l].filter = SemiImplicitFilter(*models_[l], s.inv_mass, setup.dt);
     fields_.push_back({s.u.data(), s.v.data()});
+    level_forces_.push_back(s.f.data());
   }
+  std::function<void()> gathered;
+  if (transfer_)
+    gathered = [this] { transfer_ghost_forces(*hierarchy_, *lists_, level_forces_); };
   stepper_ = std::make_unique<Stepper>(setup.integrator, std::move(blocks),
-                                       [this] { refresh_ghosts(); });
+                                       [this] { refresh_ghosts(); }, std::move(gathered));
   dt_ = setup.dt;
   stepper_->start();
 }
@@ -51,6 +61,12 @@ void HierarchicalSimulation::advance(int steps) {
 }
 
 void HierarchicalSimulation::refresh_ghosts() { update_ghosts(*hierarchy_, *lists_, fields_); }
+
+void HierarchicalSimulation::compute_forces() {
+  for (int l = 0; l < num_levels(); ++l)
+    forces_[l]->evaluate(states_[l].u.data(), states_[l].v.data(), states_[l].f.data());
+  if (transfer_) transfer_ghost_forces(*hierarchy_, *lists_, level_forces_);
+}
 
 void HierarchicalSimulation::split(int level, int point) {
   for (const auto& w : hierarchy_->split(level, point)) {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "hierarchy/coupling_kind.hpp"
 #include "hierarchy/ghost_update.hpp"
 #include "hierarchy/status_lists.hpp"
 #include "physics/level_model.hpp"
@@ -19,6 +20,7 @@ struct HierarchySetup {
   MaterialLaw law;
   Vec3 gravity = Vec3::Zero();
   Integrator integrator = Integrator::ModifiedEuler;
+  Coupling coupling = Coupling::Energy;
   double dt = 1e-3;
   std::vector<std::vector<std::uint8_t>> fixed;  // per level, 1 = Dirichlet; empty = none
   Vec3 initial_velocity = Vec3::Zero();          // m/s, every free point of every level
@@ -51,6 +53,10 @@ class HierarchicalSimulation {
   void fill_inactive();
   /// Ghost refresh (method.md §4.8); also what the stepper calls after position updates.
   void refresh_ghosts();
+  /// state(l).f of every active point at the current state, exactly as a step computes it
+  /// (ghost forces transferred under energy coupling). Not counted as work. For probes/tests.
+  void compute_forces();
+  Coupling coupling() const { return coupling_; }
 
  private:
   Vec3 fresh_value(int l, int q, bool velocity) const;
@@ -62,9 +68,12 @@ class HierarchicalSimulation {
   std::vector<std::unique_ptr<LevelForceField>> forces_;
   std::unique_ptr<Stepper> stepper_;
   std::vector<LevelFields> fields_;
+  std::vector<Vec3*> level_forces_;  // f of every level, for the ghost force transfer
   std::vector<std::pair<int, int>> woken_;
   std::vector<std::vector<std::uint8_t>> stale_;  // woken, not yet initialised
   double dt_ = 0;
+  Coupling coupling_ = Coupling::Energy;
+  bool transfer_ = false;  // energy coupling with more than one level
 };
 
 }  // namespace mrsim

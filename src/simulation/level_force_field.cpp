@@ -1,6 +1,9 @@
 #include "simulation/level_force_field.hpp"
 
+#include <algorithm>
+
 #include "core/parallel.hpp"
+#include "hierarchy/tet_shares.hpp"
 
 namespace mrsim {
 
@@ -16,9 +19,38 @@ void LevelForceField::serve(const std::vector<int>* points) {
   refresh_tets();
 }
 
+void LevelForceField::couple(const Hierarchy* h, const StatusLists* lists, int level) {
+  hierarchy_ = h;
+  lists_ = lists;
+  level_ = level;
+  share_.assign(model_.num_tets(), 0.0);
+  serve(&lists->active(level));
+}
+
 void LevelForceField::refresh_tets() {
-  if (points_ && model_.law.strain == StrainMeasure::GreenLagrange)
+  if (hierarchy_) {
+    refresh_coupling();
+  } else if (points_ && model_.law.strain == StrainMeasure::GreenLagrange) {
     live_tets(model_, IndexSet::of(*points_), tet_mark_, tets_);
+  }
+}
+
+// A level without ghosts has only whole tets (all four vertices active, invariant I2), so the
+// plain per-point path gives the same forces; the weighted path runs only at interfaces.
+void LevelForceField::refresh_coupling() {
+  for (int t : tets_) share_[t] = 0.0;
+  live_tets(model_, IndexSet::of(*points_), tet_mark_, tets_);
+  const auto& sub = lists_->ghost_sub(level_);
+  const auto& iface = lists_->ghost_iface(level_);
+  weighted_ = !sub.empty() || !iface.empty();
+  gathered_.clear();
+  if (!weighted_) return;
+  active_tet_shares(*hierarchy_, level_, tets_, share_);
+  std::vector<int> ghosts;
+  std::merge(sub.begin(), sub.end(), iface.begin(), iface.end(), std::back_inserter(ghosts));
+  std::merge(points_->begin(), points_->end(), ghosts.begin(), ghosts.end(),
+             std::back_inserter(gathered_));
+  if (model_.law.strain == StrainMeasure::Cauchy) ws_.reserve_for(model_, true);
 }
 
 IndexSet LevelForceField::points() const {
@@ -28,7 +60,10 @@ IndexSet LevelForceField::points() const {
 std::int64_t LevelForceField::evaluate(const Vec3* u, const Vec3* v, Vec3* f) {
   const IndexSet pts = points();
   const IndexSet tets = points_ ? IndexSet::of(tets_) : IndexSet::all(model_.num_tets());
-  internal_forces(model_, pts, tets, u, v, f, ws_);
+  if (weighted_)
+    weighted_internal_forces(model_, IndexSet::of(gathered_), tets, share_.data(), u, v, f, ws_);
+  else
+    internal_forces(model_, pts, tets, u, v, f, ws_);
   const int n = pts.count;
 #pragma omp parallel for schedule(static) if (n >= parallel_threshold())
   for (int k = 0; k < n; ++k) f[pts[k]] += weight_[pts[k]];

@@ -1,6 +1,10 @@
 #pragma once
 // Total force on the simulated points of one level: internal (elastic + damping) + gravity.
 // With a point list (the level's active points) it costs O(active + their tets).
+// Coupled to a hierarchy (energy-consistent coupling, docs/hierarchy.md), it also gathers the
+// force on the level's ghosts, each tet weighted by its active share, for the transfer to the
+// ghosts' sources (hierarchy/ghost_force_transfer.hpp): O(active + ghosts + live tets).
+#include "hierarchy/status_lists.hpp"
 #include "physics/internal_force.hpp"
 #include "time/force_field.hpp"
 
@@ -12,17 +16,27 @@ class LevelForceField final : public ForceField {
   /// Restrict to these points (nullptr: every point). The list is read at every evaluation;
   /// call refresh_tets() whenever it changes.
   void serve(const std::vector<int>* points);
+  /// Energy-consistent coupling with the other levels of `h` (serves lists->active(level)).
+  void couple(const Hierarchy* h, const StatusLists* lists, int level);
   void refresh_tets();
   std::int64_t evaluate(const Vec3* u, const Vec3* v, Vec3* f) override;
 
  private:
   IndexSet points() const;
+  void refresh_coupling();
   const LevelModel& model_;
   const std::vector<int>* points_ = nullptr;
   std::vector<int> tets_;                 // live tets when restricted
   std::vector<unsigned char> tet_mark_;
   std::vector<Vec3> weight_;              // m_i g, precomputed
   ForceWorkspace ws_;
+  // Coupled mode: used only while the level has ghosts (otherwise every live tet is whole).
+  const Hierarchy* hierarchy_ = nullptr;
+  const StatusLists* lists_ = nullptr;
+  int level_ = 0;
+  bool weighted_ = false;
+  std::vector<int> gathered_;             // active ∪ ghosts, sorted
+  std::vector<double> share_;             // per tet, 0 outside tets_
 };
 
 }  // namespace mrsim

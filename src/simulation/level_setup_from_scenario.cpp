@@ -22,6 +22,7 @@ HierarchySetup hierarchy_setup(const Scenario& sc, const std::vector<const TetMe
   s.law = material_law(sc.material);
   s.gravity = sc.gravity;
   s.integrator = sc.time.integrator;
+  s.coupling = sc.space.coupling;
   s.dt = sc.time.frame_dt / sc.time.substeps;
   s.fixed = select_fixed_points(meshes, sc.fixed);
   s.initial_velocity = sc.initial.velocity;

@@ -7,6 +7,19 @@
 
 namespace mrsim {
 
+namespace {
+
+// More than half of p's same-level neighbours are subdivided.
+bool surrounded(const HierarchicalSimulation& sim, int l, int p) {
+  const PointAdjacency& adj = sim.model(l).adj;
+  int sub = 0;
+  for (int e = adj.nbr_start[p]; e < adj.nbr_start[p + 1]; ++e)
+    sub += sim.hierarchy().subdivided(l, adj.nbr[e]);
+  return 2 * sub > adj.nbr_start[p + 1] - adj.nbr_start[p];
+}
+
+}  // namespace
+
 SpaceAdaptivity::SpaceAdaptivity(const SpaceAdaptivitySettings& settings,
                                  const HierarchicalSimulation& sim)
     : s_(settings), criterion_(sim.num_levels()), split_frame_(sim.num_levels()) {
@@ -45,6 +58,21 @@ void SpaceAdaptivity::split_worst(HierarchicalSimulation& sim, int frame,
     split_frame_[l][p] = frame;
     events.push_back({frame, "split", l, p});
   }
+  split_islands(sim, frame, active, events);
+}
+
+void SpaceAdaptivity::split_islands(HierarchicalSimulation& sim, int frame, std::int64_t& active,
+                                    std::vector<HierarchyEvent>& events) {
+  for (int l = 0; l < s_.max_level; ++l)
+    for (int p : sim.lists().active(l)) {
+      if (!sim.hierarchy().can_split(l, p) || !surrounded(sim, l, p)) continue;
+      const auto added = static_cast<std::int64_t>(sim.hierarchy().links(l).active_set.row(p).size());
+      if (s_.max_active_points > 0 && active + added > s_.max_active_points) return;
+      sim.split(l, p);
+      active += added;
+      split_frame_[l][p] = frame;
+      events.push_back({frame, "split", l, p});
+    }
 }
 
 void SpaceAdaptivity::merge_calm(HierarchicalSimulation& sim, int frame,
@@ -53,7 +81,7 @@ void SpaceAdaptivity::merge_calm(HierarchicalSimulation& sim, int frame,
     const std::vector<int> subdivided = sim.lists().ghost_sub(l);
     for (int p : subdivided) {
       if (split_frame_[l][p] >= 0 && frame - split_frame_[l][p] < s_.min_dwell_frames) continue;
-      if (!sim.hierarchy().can_merge(l, p)) continue;
+      if (!sim.hierarchy().can_merge(l, p) || surrounded(sim, l, p)) continue;
       double worst = 0;
       for (int c : sim.hierarchy().links(l).children.row(p)) worst = std::max(worst, criterion_[l + 1][c]);
       if (worst >= s_.coarsen_below) continue;

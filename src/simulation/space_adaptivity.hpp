@@ -4,6 +4,10 @@
 // `max_level` and an optional cap on active points; merges of subdivided points whose active
 // children are all below `coarsen_below` (hysteresis: coarsen_below < refine_above / r) after
 // at least `min_dwell_frames` frames, finest first; then garbage collection of ghosts (§4.7).
+// [Eng] An active point most of whose same-level neighbours are subdivided splits with them,
+// and a subdivided point in that situation does not merge: such an island may have no
+// criterion of its own (a corner point with a single tet has Δu = 0 for any field) and, left
+// coarse, carries its whole lumped mass inside a finer region (a spurious slow mode).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -41,6 +45,8 @@ class SpaceAdaptivity {
 
  private:
   void split_worst(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events);
+  void split_islands(HierarchicalSimulation& sim, int frame, std::int64_t& active,
+                     std::vector<HierarchyEvent>& events);
   void merge_calm(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events);
 
   SpaceAdaptivitySettings s_;

@@ -13,9 +13,10 @@ const char* integrator_name(Integrator kind) {
   return "?";
 }
 
-Stepper::Stepper(Integrator kind, std::vector<IntegrationBlock> blocks, std::function<void()> sync)
+Stepper::Stepper(Integrator kind, std::vector<IntegrationBlock> blocks, std::function<void()> sync,
+                 std::function<void()> gathered)
     : kind_(kind), blocks_(std::move(blocks)), sync_(std::move(sync)),
-      evaluations_(blocks_.size(), 0) {}
+      gathered_(std::move(gathered)), evaluations_(blocks_.size(), 0) {}
 
 IndexSet Stepper::points(const IntegrationBlock& b) const {
   return b.points ? IndexSet::of(*b.points) : IndexSet::all(b.state->size());
@@ -26,6 +27,7 @@ void Stepper::evaluate_all() {
     PointState& s = *blocks_[k].state;
     evaluations_[k] += blocks_[k].forces->evaluate(s.u.data(), s.v.data(), s.f.data());
   }
+  if (gathered_) gathered_();
 }
 
 void Stepper::start() {

@@ -2,7 +2,8 @@
 // One step of the chosen scheme (method.md §5.1, §5.3) for one or several blocks of points (the
 // levels of the hierarchy). Every force of a step is computed before any point moves
 // (method.md §5.4: "all forces first, then integrate"), so the result does not depend on the
-// order of the blocks; `sync` runs after every position update (the ghost refresh, §4.8).
+// order of the blocks; `sync` runs after every position update (the ghost refresh, §4.8) and
+// `gathered` after every force evaluation of all blocks (the ghost force transfer).
 // Exactly one force evaluation per point per step for every scheme.
 #include <cstdint>
 #include <functional>
@@ -25,7 +26,8 @@ struct IntegrationBlock {
 
 class Stepper {
  public:
-  Stepper(Integrator kind, std::vector<IntegrationBlock> blocks, std::function<void()> sync = {});
+  Stepper(Integrator kind, std::vector<IntegrationBlock> blocks, std::function<void()> sync = {},
+          std::function<void()> gathered = {});
 
   /// Must be called once before the first step (Störmer–Verlet needs f at t = 0), and again
   /// after the point sets changed (a split or merge) for the same reason.
@@ -42,6 +44,7 @@ class Stepper {
   Integrator kind_;
   std::vector<IntegrationBlock> blocks_;
   std::function<void()> sync_;
+  std::function<void()> gathered_;
   std::vector<std::int64_t> evaluations_;
 };
 

@@ -104,6 +104,25 @@ def test_threads_bit_identical(binary, scenario, tmp):
                   "frame %d array %s bit-identical for 1 and 2 threads" % (k, name))
 
 
+def test_adaptive_beam(binary, source, tmp):
+    """The bundled three-level scenario: starts on level 0, the finest level takes over where the
+    beam bends, and it runs to the end without diverging (energy-consistent coupling)."""
+    out = os.path.join(tmp, "adaptive")
+    scenario = os.path.join(source, "scenarios", "beam_adaptive.yaml")
+    r = run(binary, "run", scenario, "-o", out, "-q", "--set", "time.duration=0.3")
+    check(r.returncode == 0, "beam_adaptive runs to the end (exit %d) %s" % (r.returncode, r.stderr[-300:]))
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
+        active = h5["/frames/active"][:]
+        kinds = [k.decode() if isinstance(k, bytes) else str(k) for k in h5["/events/kind"][:]]
+    check(list(active[0]) == [16, 0, 0], "frame 0 simulates level 0 alone: %s" % list(active[0]))
+    check(active[-1][2] > 0, "the finest level is active at the end: %s" % list(active[-1]))
+    check("split" in kinds, "splits are logged in /events")
+    tip = summary["max_displacement"]
+    check(3.0e-3 < tip < 8.0e-3,
+          "largest displacement %.2f mm is that of the fine beam falling (uniform finest: 6.3 mm)" % (tip * 1e3))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--binary", required=True)
@@ -118,6 +137,7 @@ def main():
         test_exit_codes(args.binary, scenario)
         test_divergence(args.binary, scenario, tmp)
         test_threads_bit_identical(args.binary, scenario, tmp)
+        test_adaptive_beam(args.binary, args.source, tmp)
     print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
     return 1 if FAILURES else 0
 

@@ -88,7 +88,8 @@ TEST(YamlToJson, AliasExpansionIsBounded) {
   std::string text = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
   for (int i = 1; i < 8; ++i) {
     const std::string prev = "*a" + std::to_string(i - 1);
-    text += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [";
+    const std::string name = std::to_string(i);  // appended piecewise: GCC 12 -Wrestrict false positive
+    text.append("a").append(name).append(": &a").append(name).append(" [");
     for (int k = 0; k < 10; ++k) text += (k ? ", " : "") + prev;
     text += "]\n";
   }

@@ -1,15 +1,17 @@
-// Spectrum of the coupled cross-level operator (docs/hierarchy.md, "interface flutter"):
-// probe every free active DOF with the ghosts refreshed, assemble M⁻¹K_eff, and look for
-// eigenvalues λ with Im λ ≠ 0 (ü = -λu then grows like exp(Re √-λ · t)). The continuous-time
-// system is stable only if every λ is real and ≥ 0.
+// Spectrum of the coupled cross-level operator (docs/hierarchy.md, "coupling"): probe every
+// free active DOF with the ghosts refreshed, assemble M⁻¹K_eff from the forces a step computes,
+// and look for eigenvalues λ with Im λ ≠ 0 (ü = -λu then grows like exp(Re √-λ · t)). The
+// continuous-time system is stable only if every λ is real and ≥ 0.
 //
-// DISABLED: today a single split on nested beam meshes gives growth rates of 170–570 /s
-// (measured: splits of coarse points 2, 5, 9). Enable it as the acceptance check of the fix.
+// The thesis' force rule gives growth rates of 170–570 /s after a single split on nested beam
+// meshes (measured: splits of coarse points 2, 5, 9), whatever the time step; the
+// energy-consistent coupling gives a symmetric K_eff and none.
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
 #include <complex>
 
+#include "hierarchy/hierarchy_fixture.hpp"
 #include "mesh/box_mesh.hpp"
 #include "simulation/hierarchical_simulation.hpp"
 
@@ -17,63 +19,101 @@ using namespace mrsim;
 
 namespace {
 
-double max_growth_rate(int split_point) {
-  std::vector<TetMesh> meshes;
-  meshes.push_back(make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.02, 0.02), 5, 1, 1));
-  meshes.push_back(make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.02, 0.02), 10, 2, 2));
+HierarchySetup clamped_beam_setup(const std::vector<TetMesh>& meshes, Coupling coupling) {
   HierarchySetup hs;
   hs.law.strain = StrainMeasure::Cauchy;
   hs.law.lambda = 576923;
   hs.law.mu = 384615;
-  hs.fixed.resize(2);
-  for (int l = 0; l < 2; ++l) {
+  hs.coupling = coupling;
+  hs.fixed.resize(meshes.size());
+  for (size_t l = 0; l < meshes.size(); ++l) {
     hs.fixed[l].assign(meshes[l].points.size(), 0);
     for (size_t i = 0; i < meshes[l].points.size(); ++i)
       hs.fixed[l][i] = meshes[l].points[i].x() < 1e-9;
   }
-  HierarchicalSimulation sim({&meshes[0], &meshes[1]}, hs);
-  sim.split(0, split_point);
-  sim.apply_changes();
-  std::vector<std::pair<int, int>> dofs;
-  for (int l = 0; l < 2; ++l)
+  return hs;
+}
+
+// K_eff (stiffness, N/m) over the free active DOFs, by unit probes of the linear (Cauchy) model.
+Eigen::MatrixXd coupled_stiffness(HierarchicalSimulation& sim, std::vector<std::pair<int, int>>& dofs) {
+  dofs.clear();
+  for (int l = 0; l < sim.num_levels(); ++l)
     for (int p : sim.lists().active(l))
       if (sim.state(l).free_point[p]) dofs.emplace_back(l, p);
   const int n = static_cast<int>(dofs.size());
-  Eigen::MatrixXd A(3 * n, 3 * n);
+  Eigen::MatrixXd K(3 * n, 3 * n);
   const double h = 1e-6;
   for (int j = 0; j < 3 * n; ++j) {
-    for (int l = 0; l < 2; ++l) {
+    for (int l = 0; l < sim.num_levels(); ++l) {
       for (auto& u : sim.state(l).u) u.setZero();
       for (auto& v : sim.state(l).v) v.setZero();
     }
     sim.state(dofs[j / 3].first).u[dofs[j / 3].second][j % 3] = h;
     sim.refresh_ghosts();
-    for (int l = 0; l < 2; ++l) {
-      LevelForceField field(sim.model(l), Vec3::Zero());
-      field.serve(&sim.lists().active(l));
-      std::vector<Vec3> f(sim.model(l).num_points(), Vec3::Zero());
-      field.evaluate(sim.state(l).u.data(), sim.state(l).v.data(), f.data());
-      for (int i = 0; i < n; ++i)
-        if (dofs[i].first == l)
-          for (int k = 0; k < 3; ++k)
-            A(3 * i + k, j) = -f[dofs[i].second][k] / h / sim.model(l).mass[dofs[i].second];
-    }
+    sim.compute_forces();
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k) K(3 * i + k, j) = -sim.state(dofs[i].first).f[dofs[i].second][k] / h;
   }
+  return K;
+}
+
+double max_growth_rate(HierarchicalSimulation& sim, double* asymmetry = nullptr) {
+  std::vector<std::pair<int, int>> dofs;
+  const Eigen::MatrixXd K = coupled_stiffness(sim, dofs);
+  if (asymmetry) *asymmetry = (K - K.transpose()).norm() / K.norm();
+  Eigen::MatrixXd A = K;
+  for (size_t i = 0; i < dofs.size(); ++i)
+    A.middleRows(3 * i, 3) /= sim.model(dofs[i].first).mass[dofs[i].second];
   Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
   double growth = 0;
-  for (int i = 0; i < 3 * n; ++i)
+  for (int i = 0; i < A.rows(); ++i)
     growth = std::max(growth, std::abs(std::sqrt(-es.eigenvalues()[i]).real()));
   return growth;
 }
 
-}  // namespace
-
-TEST(InterfaceSpectrum, DISABLED_SingleSplitGivesNoGrowingMode) {
-  for (int p : {2, 5, 9}) EXPECT_LT(max_growth_rate(p), 1e-6) << "split of coarse point " << p;
+double single_split_growth(int split_point, Coupling coupling, double* asymmetry = nullptr) {
+  std::vector<TetMesh> meshes;
+  meshes.push_back(make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.02, 0.02), 5, 1, 1));
+  meshes.push_back(make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.02, 0.02), 10, 2, 2));
+  HierarchicalSimulation sim({&meshes[0], &meshes[1]}, clamped_beam_setup(meshes, coupling));
+  sim.split(0, split_point);
+  sim.apply_changes();
+  return max_growth_rate(sim, asymmetry);
 }
 
-TEST(InterfaceSpectrum, SymmetricSplitIsStableAndTheProbeWorks) {
-  // Point 6 of the coarse beam gives a real spectrum today: a regression guard for the probe
-  // and for the configurations that are already stable.
-  EXPECT_LT(max_growth_rate(6), 1e-6);
+}  // namespace
+
+TEST(InterfaceSpectrum, EnergyCouplingIsSymmetricWithNoGrowingModeAfterASingleSplit) {
+  for (int p : {2, 5, 6, 9}) {
+    double asym = 1;
+    EXPECT_LT(single_split_growth(p, Coupling::Energy, &asym), 1e-6) << "split of coarse point " << p;
+    EXPECT_LT(asym, 1e-8) << "split of coarse point " << p;
+  }
+}
+
+TEST(InterfaceSpectrum, ForceCouplingFluttersAfterASingleSplit) {
+  // The thesis' rule, kept as `coupling: force`: the measurement behind docs/hierarchy.md. If
+  // this stops failing to be stable, the docs' warning is out of date.
+  EXPECT_GT(single_split_growth(5, Coupling::Force), 100.0);
+  EXPECT_LT(single_split_growth(6, Coupling::Force), 1e-6);  // a symmetric split is stable
+}
+
+TEST(InterfaceSpectrum, EnergyCouplingHasNoGrowingModeOnThreeUnnestedLevels) {
+  // Jittered, unrelated meshes (extrapolated ghosts, child-tet-vertex overlaps), a region of
+  // every level active at once.
+  const auto meshes = mrsim::testing::jittered_box_levels({{3, 1, 1}, {6, 2, 2}, {10, 3, 3}}, 3, 0.2);
+  for (Coupling c : {Coupling::Energy, Coupling::Force}) {
+    HierarchicalSimulation sim({&meshes[0], &meshes[1], &meshes[2]}, clamped_beam_setup(meshes, c));
+    for (int l = 0; l < 2; ++l) {
+      for (int p : std::vector<int>(sim.lists().active(l)))
+        if (sim.model(l).mesh->points[p].x() > 0.04 + 0.02 * l && sim.hierarchy().can_split(l, p))
+          sim.split(l, p);
+      sim.apply_changes();
+    }
+    ASSERT_GT(sim.lists().active(2).size(), 0u);
+    ASSERT_GT(sim.lists().active(0).size(), 0u);
+    const double g = max_growth_rate(sim);
+    if (c == Coupling::Energy) EXPECT_LT(g, 1e-6);
+    else RecordProperty("force_coupling_growth_per_s", std::to_string(g));
+  }
 }

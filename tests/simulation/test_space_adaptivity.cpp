@@ -91,3 +91,29 @@ TEST(SpaceAdaptivity, ActivePointCapIsRespected) {
   EXPECT_LE(active, 150u);
   EXPECT_GT(sim.lists().active(1).size(), 0u);
 }
+
+TEST(SpaceAdaptivity, ABodyRefinedEverywhereIsTheFinestMeshWithNoCoarseIsland) {
+  // A field curved everywhere: every point asks to split, except those whose criterion is
+  // blind (a corner with one tet has Δu = 0 for any field). Those islands split with their
+  // neighbours, so the finest level ends up simulating the whole body, with no coarse point
+  // left carrying its lumped mass inside the fine region.
+  const auto meshes = three_boxes();
+  HierarchicalSimulation sim({&meshes[0], &meshes[1], &meshes[2]}, soft_material());
+  SpaceAdaptivitySettings s = refine_at(1e-9);
+  s.coarsen_below = 1e-10;
+  SpaceAdaptivity adapt(s, sim);
+  std::vector<HierarchyEvent> events;
+  for (int frame = 0; frame < 4; ++frame) {
+    for (int l = 0; l < 3; ++l)
+      for (int p : sim.lists().active(l)) {
+        const Vec3& X = sim.model(l).mesh->points[p];
+        sim.state(l).u[p] = 1e-3 * Vec3(X.y() * X.y(), X.z() * X.x(), X.x() * X.x()) / 0.01;
+      }
+    sim.refresh_ghosts();
+    adapt.update(sim, frame, events);
+    ASSERT_TRUE(sim.hierarchy().check_invariants().empty());
+  }
+  EXPECT_TRUE(sim.lists().active(0).empty());
+  EXPECT_TRUE(sim.lists().active(1).empty());
+  EXPECT_EQ(sim.lists().active(2).size(), meshes[2].points.size());
+}

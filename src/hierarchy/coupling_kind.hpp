@@ -1,0 +1,12 @@
+#pragma once
+namespace mrsim {
+
+// How an active point feels the levels around it (docs/hierarchy.md, "coupling").
+enum class Coupling {
+  Energy,  // forces are -∂E/∂u of one energy over all levels (ghost forces sent back, Jᵀ):
+           // symmetric, stable, momentum exact; a uniform strain leaves small interface forces
+  Force,   // the thesis' rule: each active point uses its whole star with ghost displacements;
+           // exact patch test, but the coupled operator is not symmetric (interface flutter)
+};
+
+}  // namespace mrsim

@@ -1,0 +1,25 @@
+#include "hierarchy/ghost_force_transfer.hpp"
+
+namespace mrsim {
+
+namespace {
+
+void to_tets(const std::vector<int>& ghosts, const Embedding& emb, const TetMesh& source_mesh,
+             const Vec3* ghost_force, Vec3* source_force) {
+  for (int g : ghosts) {
+    const Tet& t = source_mesh.tets[emb.tet[g]];
+    for (int k = 0; k < 4; ++k) source_force[t[k]] += emb.bary[g][k] * ghost_force[g];
+  }
+}
+
+}  // namespace
+
+void transfer_ghost_forces(const Hierarchy& h, const StatusLists& lists, std::vector<Vec3*>& f) {
+  const int L = h.num_levels();
+  for (int l = L - 1; l >= 1; --l)
+    to_tets(lists.ghost_iface(l), h.links(l).parent_tet, *h.level(l - 1).mesh, f[l], f[l - 1]);
+  for (int l = 0; l + 1 < L; ++l)
+    to_tets(lists.ghost_sub(l), h.links(l).child_tet, *h.level(l + 1).mesh, f[l], f[l + 1]);
+}
+
+}  // namespace mrsim
