@@ -32,6 +32,7 @@ struct FrameRecord {
   double kinetic_energy = 0;       // J
   double elastic_energy = 0;       // J
   double wall_time = 0;            // s, wall clock spent simulating this frame (0 at frame 0)
+  Vec3 support_reaction = Vec3::Zero();  // N, force the fixed points exert on the body
   std::vector<std::int64_t> active;             // [L]
   std::vector<std::int64_t> ghosts;             // [L]
   std::vector<std::int64_t> force_evaluations;  // [L], cumulative point-force evaluations

@@ -31,6 +31,13 @@ ExtendibleSpec per_level_spec(const char* name, std::size_t levels, const char* 
   return spec;
 }
 
+ExtendibleSpec vector_spec(const char* name, const char* units, const char* description) {
+  ExtendibleSpec spec = scalar_spec<double>(name, units, description);
+  spec.row_shape = {3};
+  spec.chunk_rows = chunk_rows_for(3 * sizeof(double), kScalarChunkRows);
+  return spec;
+}
+
 template <class T>
 void append_one(ExtendibleDataset& dataset, const T& value) {
   dataset.append(std::span<const T>(&value, 1));
@@ -55,6 +62,11 @@ FrameTable::FrameTable(hid_t file_id, std::size_t levels, const std::string& fil
                         per_level_spec("force_evaluations", levels,
                                        "cumulative point-force evaluations per level"),
                         file_};
+  support_reaction_ = {g, "/frames",
+                       vector_spec("support_reaction", "N",
+                                   "force the fixed points exert on the body, at the last force "
+                                   "evaluation of the frame"),
+                       file_};
   frame_ = {g, "/frames",
             scalar_spec<std::int32_t>("frame", "", "frame index (frame_NNNNNN.vtm)"), file_};
 }
@@ -67,12 +79,13 @@ void FrameTable::append(const FrameRecord& record) {
   active_.append(std::span<const std::int64_t>(record.active));
   ghosts_.append(std::span<const std::int64_t>(record.ghosts));
   force_evaluations_.append(std::span<const std::int64_t>(record.force_evaluations));
+  support_reaction_.append(std::span<const double>(record.support_reaction.data(), 3));
   append_one(frame_, static_cast<std::int32_t>(record.frame));
 }
 
 void FrameTable::close() {
   for (ExtendibleDataset* d : {&time_, &kinetic_energy_, &elastic_energy_, &wall_time_, &active_,
-                               &ghosts_, &force_evaluations_, &frame_}) {
+                               &ghosts_, &force_evaluations_, &support_reaction_, &frame_}) {
     d->close();
   }
   check(group_.close(), {file_, "/frames"}, "close group");

@@ -23,7 +23,7 @@ class FrameTable {
   std::string file_;
   Handle group_;
   ExtendibleDataset time_, kinetic_energy_, elastic_energy_, wall_time_;
-  ExtendibleDataset active_, ghosts_, force_evaluations_;
+  ExtendibleDataset active_, ghosts_, force_evaluations_, support_reaction_;
   ExtendibleDataset frame_;
 };
 

@@ -7,6 +7,8 @@
 #include <numbers>
 #include <set>
 
+#include "mesh/boundary_faces.hpp"
+
 namespace mrsim {
 namespace {
 
@@ -66,21 +68,6 @@ void edge_statistics(const TetMesh& mesh, TetQuality& q) {
   q.mean_edge = edges.empty() ? 0.0 : sum / static_cast<double>(edges.size());
 }
 
-std::size_t count_boundary_triangles(const TetMesh& mesh) {
-  std::map<std::array<int, 3>, int> faces;
-  for (const Tet& t : mesh.tets) {
-    for (int skip = 0; skip < 4; ++skip) {
-      std::array<int, 3> f{};
-      for (int k = 0, n = 0; k < 4; ++k) {
-        if (k != skip) f[n++] = t[k];
-      }
-      std::sort(f.begin(), f.end());
-      ++faces[f];
-    }
-  }
-  return static_cast<std::size_t>(std::count_if(faces.begin(), faces.end(), [](const auto& f) { return f.second == 1; }));
-}
-
 }  // namespace
 
 TetQuality measure_quality(const TetMesh& mesh) {
@@ -102,7 +89,7 @@ TetQuality measure_quality(const TetMesh& mesh) {
   }
   q.mean_radius_ratio = mesh.tets.empty() ? 0.0 : ratio_sum / static_cast<double>(mesh.tets.size());
   edge_statistics(mesh, q);
-  q.boundary_triangles = count_boundary_triangles(mesh);
+  q.boundary_triangles = boundary_faces(mesh).size();
   return q;
 }
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -41,6 +42,13 @@ struct FixedRegion {
   Vec3 point = Vec3::Zero(), normal = Vec3::Zero(); // HalfSpace: fixes (X - point).normal >= 0
   std::vector<int> ids;                              // Ids: 0-based vertex ids of the level
   int level = -1;                                    // -1: every level
+};
+
+/// A total force spread over the boundary faces inside a box (scenario `loads`).
+struct SurfaceLoadSpec {
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();  // box, metres
+  Vec3 force = Vec3::Zero();                    // N, at factor 1
+  std::vector<std::pair<double, double>> profile{{0.0, 1.0}};  // (time s, factor), increasing
 };
 
 struct InitialSpec {
@@ -78,6 +86,7 @@ struct Scenario {
   LengthUnit units = LengthUnit::Metre;
   MaterialSpec material;
   std::vector<FixedRegion> fixed;
+  std::vector<SurfaceLoadSpec> loads;
   Vec3 gravity = Vec3::Zero();
   InitialSpec initial;
   TimeSpec time;

@@ -62,6 +62,16 @@ TimeSpec time_spec(const json& t) {
   return spec;
 }
 
+SurfaceLoadSpec load_spec(const json& l) {
+  SurfaceLoadSpec spec;
+  spec.min = vec3(l["box"]["min"]);
+  spec.max = vec3(l["box"]["max"]);
+  spec.force = vec3(l["force"]);
+  spec.profile.clear();
+  for (const json& p : l["profile"]) spec.profile.emplace_back(p[0].get<double>(), p[1].get<double>());
+  return spec;
+}
+
 SpaceAdaptivitySpec space_spec(const json& a) {
   SpaceAdaptivitySpec spec;
   spec.enabled = a["enabled"].get<bool>();
@@ -89,6 +99,7 @@ Scenario build_scenario(const json& resolved, const std::filesystem::path& sourc
   s.units = resolved["object"]["units"] == "mm" ? LengthUnit::Millimetre : LengthUnit::Metre;
   s.material = material(resolved["material"]);
   for (const auto& f : resolved["fixed"]) s.fixed.push_back(fixed_region(f));
+  for (const auto& l : resolved["loads"]) s.loads.push_back(load_spec(l));
   s.gravity = vec3(resolved["gravity"]);
   s.initial = {vec3(resolved["initial"]["velocity"]),
                vec3(resolved["initial"]["angular_velocity"])};

@@ -46,6 +46,20 @@ void check_fixed(const json& document, std::vector<Issue>& issues) {
   }
 }
 
+void check_loads(const json& document, std::vector<Issue>& issues) {
+  const json& loads = document["loads"];
+  for (std::size_t i = 0; i < loads.size(); ++i) {
+    const std::string pointer = child_pointer("/loads", i);
+    check_box(loads[i]["box"], child_pointer(pointer, "box"), issues);
+    const json& profile = loads[i]["profile"];
+    for (std::size_t k = 1; k < profile.size(); ++k)
+      if (profile[k][0].get<double>() <= profile[k - 1][0].get<double>())
+        issues.push_back({child_pointer(child_pointer(pointer, "profile"), k),
+                          "times must increase (" + profile[k][0].dump() + " after " +
+                              profile[k - 1][0].dump() + ")"});
+  }
+}
+
 void check_time(const json& time, std::vector<Issue>& issues) {
   if (time["duration"].get<double>() < time["frame_dt"].get<double>())
     issues.push_back({"/time/duration", "must be >= time.frame_dt (" + time["duration"].dump() +
@@ -84,6 +98,7 @@ void check_semantics(const json& document, const SourceMap& positions) {
   std::vector<Issue> issues;
   check_name(document["name"], issues);
   check_fixed(document, issues);
+  check_loads(document, issues);
   check_time(document["time"], issues);
   check_material(document["material"], issues);
   check_adaptivity(document, issues);

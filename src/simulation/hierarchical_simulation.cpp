@@ -1,6 +1,7 @@
 #include "simulation/hierarchical_simulation.hpp"
 
 #include <algorithm>
+#include <tuple>
 
 #include "hierarchy/ghost_force_transfer.hpp"
 #include "simulation/diagnostics.hpp"
@@ -20,6 +21,8 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   hierarchy_ = std::make_unique<Hierarchy>(levels, build_level_links(levels));
   lists_ = std::make_unique<StatusLists>(*hierarchy_);
   states_.resize(L);
+  fixed_.resize(L);
+  fixed_ghosts_.resize(L);
   stale_.resize(L);
   std::vector<IntegrationBlock> blocks(L);
   for (int l = 0; l < L; ++l) {
@@ -29,6 +32,8 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
     if (l < static_cast<int>(setup.fixed.size()) && !setup.fixed[l].empty())
       for (int i = 0; i < s.size(); ++i) s.free_point[i] = setup.fixed[l][i] ? 0 : 1;
     stale_[l].assign(s.size(), 0);
+    for (int i = 0; i < s.size(); ++i)
+      if (!s.free_point[i]) fixed_[l].push_back(i);
     const Vec3 c = centre_of_mass(*models_[0]->mesh, models_[0]->mass);
     for (int i = 0; i < s.size(); ++i)
       if (s.free_point[i])
@@ -49,23 +54,131 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   }
   std::function<void()> gathered;
   if (transfer_)
-    gathered = [this] { transfer_ghost_forces(*hierarchy_, *lists_, level_forces_); };
+    gathered = [this] { transfer_forces(); };
+  loads_ = setup.loads;
+  if (!loads_.empty()) {
+    external_.resize(L);
+    for (int l = 0; l < L; ++l) {
+      external_[l].assign(models_[l]->num_points(), Vec3::Zero());
+      forces_[l]->set_external(external_[l].data());
+    }
+    resolve_loads();
+    update_loads(0.0);
+  }
   stepper_ = std::make_unique<Stepper>(setup.integrator, std::move(blocks),
-                                       [this] { refresh_ghosts(); }, std::move(gathered));
+                                       [this] { after_positions(); }, std::move(gathered));
   dt_ = setup.dt;
   stepper_->start();
 }
 
 void HierarchicalSimulation::advance(int steps) {
-  for (int s = 0; s < steps; ++s) stepper_->step(dt_);
+  for (int s = 0; s < steps; ++s) {
+    clock_ = time_ + dt_;
+    stepper_->step(dt_);
+    time_ = clock_;
+  }
 }
 
-void HierarchicalSimulation::refresh_ghosts() { update_ghosts(*hierarchy_, *lists_, fields_); }
+// Positions (and with them the load time) moved to the end of the step under way.
+void HierarchicalSimulation::after_positions() {
+  refresh_ghosts();
+  if (!loads_.empty()) update_loads(clock_);
+}
+
+// A force on point p of level l reaches the active points that move p, with the weights that
+// move it: a subdivided ghost through its child tet, an interface ghost or an inactive point
+// through its parent tet (the transpose of the interpolations; level 0 is never inactive).
+void HierarchicalSimulation::deposit(int load, int l, int p, const Vec3& force) {
+  const NodeState s = hierarchy_->state(l, p);
+  if (s != NodeState::Active && !states_[l].free_point[p]) {  // held by the support
+    load_targets_.push_back({load, -1, p, force});
+    return;
+  }
+  if (s == NodeState::Active) {
+    load_targets_.push_back({load, l, p, force});
+    return;
+  }
+  const bool finer = s == NodeState::GhostSub;
+  const Embedding& e = finer ? hierarchy_->links(l).child_tet : hierarchy_->links(l).parent_tet;
+  const int source = finer ? l + 1 : l - 1;
+  const Tet& t = models_[source]->mesh->tets[e.tet[p]];
+  for (int k = 0; k < 4; ++k)
+    if (e.bary[p][k] != 0) deposit(load, source, t[k], e.bary[p][k] * force);
+}
+
+// Once per topology change: where every nodal load lands, merged per (load, level, point).
+void HierarchicalSimulation::resolve_loads() {
+  for (const LoadTarget& target : load_targets_)
+    if (target.level >= 0) external_[target.level][target.point].setZero();
+  load_targets_.clear();
+  const int fine = num_levels() - 1;
+  for (int k = 0; k < static_cast<int>(loads_.size()); ++k)
+    for (size_t i = 0; i < loads_[k].finest.points.size(); ++i)
+      deposit(k, fine, loads_[k].finest.points[i], loads_[k].finest.force[i]);
+  auto key = [](const LoadTarget& a) { return std::tuple(a.load, a.level, a.point); };
+  std::stable_sort(load_targets_.begin(), load_targets_.end(),
+                   [&](const LoadTarget& a, const LoadTarget& b) { return key(a) < key(b); });
+  std::vector<LoadTarget> merged;
+  for (const LoadTarget& t : load_targets_) {
+    if (!merged.empty() && key(merged.back()) == key(t))
+      merged.back().force += t.force;
+    else
+      merged.push_back(t);
+  }
+  load_targets_ = std::move(merged);
+}
+
+// O(loaded points) per step: clear the previous shares, then add each load at its factor.
+void HierarchicalSimulation::update_loads(double t) {
+  loads_on_support_.setZero();
+  for (const LoadTarget& target : load_targets_)
+    if (target.level >= 0) external_[target.level][target.point].setZero();
+  for (const LoadTarget& target : load_targets_) {
+    const Vec3 f = load_factor(loads_[target.load].profile, t) * target.force;
+    if (target.level >= 0)
+      external_[target.level][target.point] += f;
+    else
+      loads_on_support_ += f;
+  }
+}
+
+// A Dirichlet point stays at rest on every level, ghost or not: its row of the interpolation
+// map is zero, so it never carries a stale interpolated value into a split (a prestress) and
+// its force goes to the support, not to its sources.
+void HierarchicalSimulation::refresh_ghosts() {
+  update_ghosts(*hierarchy_, *lists_, fields_);
+  for (int l = 0; l < num_levels(); ++l)
+    for (int p : fixed_ghosts_[l]) {
+      states_[l].u[p].setZero();
+      states_[l].v[p].setZero();
+    }
+}
+
+void HierarchicalSimulation::transfer_forces() {
+  ghosts_on_support_.setZero();
+  for (int l = 0; l < num_levels(); ++l)
+    for (int p : fixed_ghosts_[l]) {
+      ghosts_on_support_ += states_[l].f[p];
+      states_[l].f[p].setZero();
+    }
+  transfer_ghost_forces(*hierarchy_, *lists_, level_forces_);
+}
+
+// O(fixed points), once per topology change.
+void HierarchicalSimulation::refile_fixed_ghosts() {
+  for (int l = 0; l < num_levels(); ++l) {
+    fixed_ghosts_[l].clear();
+    for (int p : fixed_[l]) {
+      const NodeState s = hierarchy_->state(l, p);
+      if (s == NodeState::GhostSub || s == NodeState::GhostIface) fixed_ghosts_[l].push_back(p);
+    }
+  }
+}
 
 void HierarchicalSimulation::compute_forces() {
   for (int l = 0; l < num_levels(); ++l)
     forces_[l]->evaluate(states_[l].u.data(), states_[l].v.data(), states_[l].f.data());
-  if (transfer_) transfer_ghost_forces(*hierarchy_, *lists_, level_forces_);
+  if (transfer_) transfer_forces();
 }
 
 void HierarchicalSimulation::split(int level, int point) {
@@ -96,14 +209,23 @@ void HierarchicalSimulation::apply_changes() {
   for (const auto& [l, q] : woken_) {
     if (!stale_[l][q]) continue;
     stale_[l][q] = 0;
-    if (!states_[l].free_point[q]) continue;  // Dirichlet points stay at rest
+    if (!states_[l].free_point[q]) {  // Dirichlet points stay at rest (u may hold a display value)
+      states_[l].u[q].setZero();
+      states_[l].v[q].setZero();
+      continue;
+    }
     const Vec3 u = fresh_value(l, q, false), v = fresh_value(l, q, true);
     states_[l].u[q] = u;
     states_[l].v[q] = v;
   }
   woken_.clear();
+  refile_fixed_ghosts();
   for (auto& f : forces_) f->refresh_tets();
   refresh_ghosts();
+  if (!loads_.empty()) {
+    resolve_loads();
+    update_loads(time_);
+  }
   stepper_->start();
 }
 

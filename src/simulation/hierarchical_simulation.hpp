@@ -12,6 +12,7 @@
 #include "hierarchy/status_lists.hpp"
 #include "physics/level_model.hpp"
 #include "simulation/level_force_field.hpp"
+#include "simulation/surface_load.hpp"
 #include "time/stepper.hpp"
 
 namespace mrsim {
@@ -25,6 +26,7 @@ struct HierarchySetup {
   std::vector<std::vector<std::uint8_t>> fixed;  // per level, 1 = Dirichlet; empty = none
   Vec3 initial_velocity = Vec3::Zero();          // m/s, every free point of every level
   Vec3 initial_angular_velocity = Vec3::Zero();  // rad/s about level 0's centre of mass
+  std::vector<SurfaceLoad> loads;                // surface loads, nodal forces per level
 };
 
 class HierarchicalSimulation {
@@ -40,6 +42,8 @@ class HierarchicalSimulation {
   std::int64_t force_evaluations(int l) const { return stepper_->force_evaluations(l); }
 
   void advance(int steps);
+  /// Simulated time (s) since the start: steps taken × dt.
+  double time() const { return time_; }
 
   /// Topology changes, applied between steps. After any of them call apply_changes().
   void split(int level, int point);
@@ -57,9 +61,18 @@ class HierarchicalSimulation {
   /// (ghost forces transferred under energy coupling). Not counted as work. For probes/tests.
   void compute_forces();
   Coupling coupling() const { return coupling_; }
+  /// Force that fixed ghosts and fixed loaded points pass to the support instead of to active
+  /// points (N), at the last force evaluation / load update: part of the support reaction.
+  Vec3 held_by_support() const { return ghosts_on_support_ + loads_on_support_; }
 
  private:
   Vec3 fresh_value(int l, int q, bool velocity) const;
+  void resolve_loads();
+  void deposit(int load, int l, int p, const Vec3& force);
+  void update_loads(double t);
+  void after_positions();
+  void transfer_forces();
+  void refile_fixed_ghosts();
 
   std::vector<std::unique_ptr<LevelModel>> models_;
   std::vector<PointState> states_;
@@ -71,7 +84,18 @@ class HierarchicalSimulation {
   std::vector<Vec3*> level_forces_;  // f of every level, for the ghost force transfer
   std::vector<std::pair<int, int>> woken_;
   std::vector<std::vector<std::uint8_t>> stale_;  // woken, not yet initialised
+  std::vector<std::vector<int>> fixed_;          // Dirichlet points per level
+  std::vector<std::vector<int>> fixed_ghosts_;   // those that are ghosts now
   double dt_ = 0;
+  double time_ = 0, clock_ = 0;  // clock_: the time positions reach in the step under way
+  std::vector<SurfaceLoad> loads_;
+  Vec3 ghosts_on_support_ = Vec3::Zero(), loads_on_support_ = Vec3::Zero();
+  struct LoadTarget {  // the share of a load an active point (level -1: the support) carries
+    int load, level, point;
+    Vec3 force;
+  };
+  std::vector<LoadTarget> load_targets_;  // rebuilt when the active sets change
+  std::vector<std::vector<Vec3>> external_;  // per level, Σ factor × nodal load (N)
   Coupling coupling_ = Coupling::Energy;
   bool transfer_ = false;  // energy coupling with more than one level
 };

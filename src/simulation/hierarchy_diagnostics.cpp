@@ -51,6 +51,14 @@ Energies hierarchy_energies(const HierarchicalSimulation& sim) {
   return e;
 }
 
+Vec3 support_reaction(const HierarchicalSimulation& sim) {
+  Vec3 r = -sim.held_by_support();
+  for (int l = 0; l < sim.num_levels(); ++l)
+    for (int p : sim.lists().active(l))
+      if (!sim.state(l).free_point[p]) r -= sim.state(l).f[p];
+  return r;
+}
+
 double max_active_displacement(const HierarchicalSimulation& sim) {
   double d = 0;
   for (int l = 0; l < sim.num_levels(); ++l)

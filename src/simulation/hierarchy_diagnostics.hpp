@@ -14,5 +14,9 @@ struct Energies {
 
 Energies hierarchy_energies(const HierarchicalSimulation& sim);
 double max_active_displacement(const HierarchicalSimulation& sim);
+/// Force the supports exert (N): minus the sum of the last evaluated forces on the fixed points
+/// of every level (active ones, and ghosts whose force goes to the support). At rest it
+/// balances the weight and the loads.
+Vec3 support_reaction(const HierarchicalSimulation& sim);
 
 }  // namespace mrsim

@@ -67,6 +67,10 @@ std::int64_t LevelForceField::evaluate(const Vec3* u, const Vec3* v, Vec3* f) {
   const int n = pts.count;
 #pragma omp parallel for schedule(static) if (n >= parallel_threshold())
   for (int k = 0; k < n; ++k) f[pts[k]] += weight_[pts[k]];
+  if (external_) {
+#pragma omp parallel for schedule(static) if (n >= parallel_threshold())
+    for (int k = 0; k < n; ++k) f[pts[k]] += external_[pts[k]];
+  }
   return n;
 }
 

@@ -19,6 +19,9 @@ class LevelForceField final : public ForceField {
   /// Energy-consistent coupling with the other levels of `h` (serves lists->active(level)).
   void couple(const Hierarchy* h, const StatusLists* lists, int level);
   void refresh_tets();
+  /// Extra force per point (N, the level's surface loads), added on the served points; the
+  /// array is read at every evaluation. nullptr: none.
+  void set_external(const Vec3* external) { external_ = external; }
   std::int64_t evaluate(const Vec3* u, const Vec3* v, Vec3* f) override;
 
  private:
@@ -30,6 +33,7 @@ class LevelForceField final : public ForceField {
   std::vector<unsigned char> tet_mark_;
   std::vector<Vec3> weight_;              // m_i g, precomputed
   ForceWorkspace ws_;
+  const Vec3* external_ = nullptr;
   // Coupled mode: used only while the level has ghosts (otherwise every live tet is whole).
   const Hierarchy* hierarchy_ = nullptr;
   const StatusLists* lists_ = nullptr;

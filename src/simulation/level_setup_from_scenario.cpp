@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "simulation/fixed_points.hpp"
+#include "simulation/surface_load_distribution.hpp"
 
 namespace mrsim {
 
@@ -27,6 +28,8 @@ HierarchySetup hierarchy_setup(const Scenario& sc, const std::vector<const TetMe
   s.fixed = select_fixed_points(meshes, sc.fixed);
   s.initial_velocity = sc.initial.velocity;
   s.initial_angular_velocity = sc.initial.angular_velocity;
+  for (size_t k = 0; k < sc.loads.size(); ++k)
+    s.loads.push_back(distribute_surface_load(*meshes.back(), sc.loads[k], k));
   return s;
 }
 

@@ -110,6 +110,7 @@ class FrameWriter {
     rec.kinetic_energy = e.kinetic;
     rec.elastic_energy = e.elastic;
     rec.wall_time = frame_wall;
+    rec.support_reaction = support_reaction(sim_);
     for (int l = 0; l < L_; ++l) {
       fill_status(l);
       rec.active.push_back(static_cast<std::int64_t>(sim_.lists().active(l).size()));

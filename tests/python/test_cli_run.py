@@ -123,6 +123,22 @@ def test_adaptive_beam(binary, source, tmp):
           "largest displacement %.2f mm is that of the fine beam falling (uniform finest: 6.3 mm)" % (tip * 1e3))
 
 
+def test_liver_press(binary, source, tmp):
+    """A local press refines under the load and coarsens back when released (issue 4)."""
+    out = os.path.join(tmp, "liver_press")
+    scenario = os.path.join(source, "scenarios", "liver_press.yaml")
+    r = run(binary, "run", scenario, "-o", out, "-q", "--set", "time.duration=1.2")
+    check(r.returncode == 0, "liver_press runs to the end (exit %d) %s" % (r.returncode, r.stderr[-300:]))
+    with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
+        active = h5["/frames/active"][:]
+        reaction = h5["/frames/support_reaction"][:]
+    peak = int(active[:, 3].max())
+    check(100 < peak < 3386 // 2, "the finest level takes over under the load only: %d of 3386" % peak)
+    check(list(active[-1]) == [20, 0, 0, 0], "released, the liver is back on level 0: %s" % list(active[-1]))
+    check(reaction.shape == (len(active), 3) and reaction[:, 2].max() > 0.5,
+          "the support pushes back while the 1 N load is on (max %.2f N)" % reaction[:, 2].max())
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--binary", required=True)
@@ -138,6 +154,7 @@ def main():
         test_divergence(args.binary, scenario, tmp)
         test_threads_bit_identical(args.binary, scenario, tmp)
         test_adaptive_beam(args.binary, args.source, tmp)
+        test_liver_press(args.binary, args.source, tmp)
     print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
     return 1 if FAILURES else 0
 

@@ -23,7 +23,7 @@ import yaml
 
 # Text that names a unit in a description: SI units used by mrsim, or an explicit
 # "no unit" / "dimensionless" / "unit of ..." for quantities without one.
-UNIT = re.compile(r"(\b(Pa|Pa\.s|m|mm|s|kg/m\^3|m/s\^2|m/s|rad/s|J|m\^3)\b|no unit|dimensionless"
+UNIT = re.compile(r"(\b(Pa|Pa\.s|m|mm|s|N|kg/m\^3|m/s\^2|m/s|rad/s|J|m\^3)\b|no unit|dimensionless"
                   r"|unit of|unit is)")
 
 
