@@ -60,8 +60,7 @@ int command_run(const CommonArgs& a) {
 
 int command_check(const CommonArgs& a) {
   set_quiet(a.quiet);
-  const Scenario sc = load(a);
-  check_scenario_inputs(sc);
+  const Scenario sc = check_scenario_inputs(load(a));
   std::cout << resolved_yaml(sc);
   return kExitOk;
 }

@@ -59,7 +59,8 @@ struct InitialSpec {
 struct TimeSpec {
   IntegratorKind integrator = IntegratorKind::ModifiedEuler;
   double frame_dt = 0.04;  // s, display frame
-  int substeps = 64;       // simulation steps per frame
+  int substeps = 0;        // simulation steps per frame; 0 = computed from the meshes
+  double courant = 0.5;    // C in dt <= C h_min / c_p
   double duration = 1.0;   // s
   double divergence_energy_factor = 1.0;  // see simulation/divergence.hpp
 };

@@ -56,7 +56,8 @@ TimeSpec time_spec(const json& t) {
   TimeSpec spec;
   spec.integrator = integrator(t["integrator"]);
   spec.frame_dt = t["frame_dt"].get<double>();
-  spec.substeps = t["substeps"].get<int>();
+  spec.substeps = t.contains("substeps") ? t["substeps"].get<int>() : 0;
+  spec.courant = t["courant"].get<double>();
   spec.duration = t["duration"].get<double>();
   spec.divergence_energy_factor = t["divergence"]["energy_factor"].get<double>();
   return spec;

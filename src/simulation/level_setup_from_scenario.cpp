@@ -44,10 +44,4 @@ SpaceAdaptivitySettings space_settings(const Scenario& sc) {
   return s;
 }
 
-double recommended_max_dt(const LevelModel& model, Integrator integrator) {
-  const double h = *std::min_element(model.min_edge.begin(), model.min_edge.end());
-  const double dt = 0.5 * h / model.law.p_wave_speed();
-  return integrator == Integrator::SemiImplicit ? 2 * dt : dt;
-}
-
 }  // namespace mrsim

@@ -13,8 +13,4 @@ HierarchySetup hierarchy_setup(const Scenario& scenario, const std::vector<const
 
 SpaceAdaptivitySettings space_settings(const Scenario& scenario);
 
-/// Largest step the explicit schemes are safe with on this level: 0.5 × shortest edge / c_p
-/// (validation.md §2.7, measured factor 0.62–0.76), doubled for the semi-implicit step.
-double recommended_max_dt(const LevelModel& model, Integrator integrator);
-
 }  // namespace mrsim

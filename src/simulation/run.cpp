@@ -17,6 +17,7 @@
 #include "simulation/divergence.hpp"
 #include "simulation/hierarchy_diagnostics.hpp"
 #include "simulation/level_setup_from_scenario.hpp"
+#include "simulation/stable_step.hpp"
 
 namespace mrsim {
 
@@ -63,22 +64,6 @@ int frame_count(const TimeSpec& t) {
     warn(os.str());
   }
   return static_cast<int>(frames);
-}
-
-// Every level that may become active must be stable at the single step of issue 2.
-void warn_if_unstable(const HierarchicalSimulation& sim, const HierarchySetup& setup,
-                      int max_level) {
-  for (int l = 0; l <= max_level; ++l) {
-    const double limit = recommended_max_dt(sim.model(l), setup.integrator);
-    if (setup.dt <= limit) continue;
-    std::ostringstream os;
-    os << "level " << l << ": time step " << setup.dt
-       << " s (frame_dt / substeps) exceeds the stable estimate " << limit
-       << " s of this mesh (0.5 x shortest edge / P-wave speed"
-       << (setup.integrator == Integrator::SemiImplicit ? ", x2 for semi_implicit" : "")
-       << "); raise time.substeps to at least " << std::ceil(setup.dt / limit) << "x its value";
-    warn(os.str());
-  }
 }
 
 // Everything written per display frame: one block / status row per level.
@@ -212,28 +197,19 @@ nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& si
 
 }  // namespace
 
-void check_scenario_inputs(const Scenario& sc) {
+Scenario check_scenario_inputs(const Scenario& sc) {
   const std::vector<TetMesh> meshes = load_meshes(sc);
-  const HierarchySetup setup = hierarchy_setup(sc, pointers(meshes));
-  for (size_t l = 0; l < meshes.size(); ++l) {
-    const LevelModel model = build_level_model(meshes[l], setup.law);
-    const double limit = recommended_max_dt(model, setup.integrator);
-    if (setup.dt > limit) {
-      std::ostringstream os;
-      os << "level " << l << ": time step " << setup.dt << " s exceeds the stable estimate "
-         << limit << " s";
-      warn(os.str());
-    }
-  }
+  hierarchy_setup(sc, pointers(meshes));  // fixed regions and loads select something
+  return with_stable_substeps(sc, pointers(meshes));
 }
 
-RunSummary run_scenario(const Scenario& sc, const RunOptions& options) {
+RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
   const auto t0 = Clock::now();
-  const std::vector<TetMesh> meshes = load_meshes(sc);
+  const std::vector<TetMesh> meshes = load_meshes(input);
+  const Scenario sc = with_stable_substeps(input, pointers(meshes));
   const HierarchySetup setup = hierarchy_setup(sc, pointers(meshes));
   HierarchicalSimulation sim(pointers(meshes), setup);
   SpaceAdaptivity adapt(space_settings(sc), sim);
-  warn_if_unstable(sim, setup, sc.space.enabled ? sim.num_levels() - 1 : 0);
   const DivergenceGuard guard =
       DivergenceGuard::for_level(sim.model(0), sc.time.divergence_energy_factor);
   const int frames = frame_count(sc.time);

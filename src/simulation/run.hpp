@@ -29,8 +29,9 @@ struct RunSummary {
 
 RunSummary run_scenario(const Scenario& scenario, const RunOptions& options = {});
 
-/// Loads every mesh of the scenario and checks it against the scenario (fixed regions, time
-/// step): what `mrsim check` does beyond the schema. Throws InputError.
-void check_scenario_inputs(const Scenario& scenario);
+/// Loads every mesh of the scenario and checks it against the scenario (fixed regions, loads,
+/// time step): what `mrsim check` does beyond the schema. Returns the scenario with
+/// time.substeps computed when it was omitted. Throws InputError.
+Scenario check_scenario_inputs(const Scenario& scenario);
 
 }  // namespace mrsim

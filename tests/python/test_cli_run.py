@@ -48,6 +48,28 @@ def test_exit_codes(binary, scenario):
     check(r.returncode == 2 and "missing.msh" in r.stderr, "check loads the meshes (exit 2)")
 
 
+def test_computed_substeps(binary, scenario, tmp):
+    """Without time.substeps, mrsim computes a stable power of two and records it."""
+    text = open(scenario).read()
+    meshes = os.path.join(os.path.dirname(os.path.abspath(scenario)), "meshes") + "/"
+    lines = [l.replace("meshes/", meshes) for l in text.splitlines()
+             if not l.strip().startswith("substeps:")]
+    path = os.path.join(tmp, "no_substeps.yaml")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    r = run(binary, "check", path)
+    m = [l for l in r.stdout.splitlines() if l.strip().startswith("substeps:")]
+    n = int(m[0].split(":")[1]) if m else 0
+    check(r.returncode == 0 and n > 0 and n & (n - 1) == 0,
+          "check fills in time.substeps with a power of two (%d)" % n)
+    check("time.substeps computed" in r.stderr, "and says so: " + r.stderr.strip()[-160:])
+    out = os.path.join(tmp, "computed")
+    r = run(binary, "run", path, "-o", out, "-q", "--set", "time.duration=0.2")
+    check(r.returncode == 0, "a run without substeps is stable (exit %d)" % r.returncode)
+    written = open(os.path.join(out, "scenario.yaml")).read()
+    check("substeps: %d" % n in written, "scenario.yaml records the computed substeps")
+
+
 def test_divergence(binary, scenario, tmp):
     out = os.path.join(tmp, "diverged")
     r = run(binary, "run", scenario, "-o", out, "--set", "time.substeps=4",
@@ -163,6 +185,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         test_exit_codes(args.binary, scenario)
         test_divergence(args.binary, scenario, tmp)
+        test_computed_substeps(args.binary, scenario, tmp)
         test_threads_bit_identical(args.binary, scenario, tmp, 0.1, (1, 5))
         scenarios = os.path.join(args.source, "scenarios")
         test_threads_bit_identical(args.binary, os.path.join(scenarios, "beam_adaptive.yaml"), tmp,
