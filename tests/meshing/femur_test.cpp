@@ -3,9 +3,7 @@
 // femur"). `mrsim mesh` falls back to simplifying the surface by edge collapses and keeping it
 // as the tet mesh's boundary: the levels must come within the band, keep the volume and the
 // genus, and reach the quality stated in docs/meshing.md (skipped when ../shared is absent).
-#include <algorithm>
-#include <map>
-
+#include "mesh/boundary_faces.hpp"
 #include "meshing/level_outputs.hpp"
 #include "meshing/level_set.hpp"
 #include "meshing/surface_input.hpp"
@@ -20,24 +18,11 @@ namespace {
 // a margin: a change to the fallback that makes them worse fails here.
 constexpr double kFemurMinDihedralDeg = 7.0;
 
-/// The boundary triangles of a tet mesh, as a surface (faces used by one tet only).
+/// The boundary triangles of a tet mesh, as a surface.
 SurfaceMesh boundary_of(const TetMesh& mesh) {
-  static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-  std::map<std::array<int, 3>, std::pair<int, Triangle>> faces;
-  for (const Tet& t : mesh.tets) {
-    for (const auto& f : kFaces) {
-      Triangle oriented{t[f[0]], t[f[1]], t[f[2]]};
-      std::array<int, 3> key = oriented;
-      std::sort(key.begin(), key.end());
-      auto [it, inserted] = faces.try_emplace(key, 1, oriented);
-      if (!inserted) ++it->second.first;
-    }
-  }
   SurfaceMesh surface;
   surface.points = mesh.points;
-  for (const auto& [key, use] : faces) {
-    if (use.first == 1) surface.triangles.push_back(use.second);
-  }
+  for (const Face& f : boundary_faces(mesh)) surface.triangles.push_back({f[0], f[1], f[2]});
   surface.face_of.assign(surface.triangles.size(), 0);
   weld_identical_points(surface);  // drops the inner points
   return surface;
