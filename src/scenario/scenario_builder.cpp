@@ -49,6 +49,7 @@ FixedRegion fixed_region(const json& f) {
 IntegratorKind integrator(const json& name) {
   if (name == "stoermer_verlet") return IntegratorKind::StoermerVerlet;
   if (name == "semi_implicit") return IntegratorKind::SemiImplicit;
+  if (name == "semi_implicit_momentum") return IntegratorKind::SemiImplicitMomentum;
   return IntegratorKind::ModifiedEuler;
 }
 

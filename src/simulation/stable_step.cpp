@@ -21,7 +21,7 @@ double shortest_edge(const TetMesh& mesh) {
 
 StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes) {
   const double c = material_law(sc.material).p_wave_speed();
-  const double factor = sc.time.integrator == Integrator::SemiImplicit ? 2.0 : 1.0;
+  const double factor = is_semi_implicit(sc.time.integrator) ? 2.0 : 1.0;
   int last = 0;
   if (sc.space.enabled)
     last = sc.space.max_level >= 0 ? std::min<int>(sc.space.max_level, meshes.size() - 1)
@@ -43,7 +43,7 @@ Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMes
       os << "level " << stable.level << ": time step " << dt
          << " s (frame_dt / substeps) exceeds the stable estimate " << stable.dt
          << " s (time.courant x shortest edge / P-wave speed"
-         << (sc.time.integrator == Integrator::SemiImplicit ? ", x2 for semi_implicit" : "")
+         << (is_semi_implicit(sc.time.integrator) ? ", x2 for semi_implicit" : "")
          << "); raise time.substeps to at least " << std::ceil(sc.time.frame_dt / stable.dt)
          << " or omit it to have it computed";
       warn(os.str());

@@ -6,7 +6,13 @@ enum class Integrator {
   ModifiedEuler,   // symplectic Euler: v += dt f/m; u += dt v
   StoermerVerlet,  // kick-drift-kick (velocity Verlet); positions identical to modified Euler
   SemiImplicit,    // eq. (5.1): v += dt f/m; v = (I - dt²J/m)^-1 v; u += dt v
+  SemiImplicitMomentum,  // eq. (5.1), then a free body gets back the linear and angular
+                         // momentum the filter removed (time/momentum_restoration.hpp)
 };
+
+inline bool is_semi_implicit(Integrator kind) {
+  return kind == Integrator::SemiImplicit || kind == Integrator::SemiImplicitMomentum;
+}
 
 const char* integrator_name(Integrator kind);
 

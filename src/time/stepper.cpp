@@ -1,6 +1,7 @@
 #include "time/stepper.hpp"
 
 #include "time/explicit_updates.hpp"
+#include "time/momentum_restoration.hpp"
 
 namespace mrsim {
 
@@ -9,6 +10,7 @@ const char* integrator_name(Integrator kind) {
     case Integrator::ModifiedEuler: return "modified_euler";
     case Integrator::StoermerVerlet: return "stoermer_verlet";
     case Integrator::SemiImplicit: return "semi_implicit";
+    case Integrator::SemiImplicitMomentum: return "semi_implicit_momentum";
   }
   return "?";
 }
@@ -16,7 +18,33 @@ const char* integrator_name(Integrator kind) {
 Stepper::Stepper(Integrator kind, std::vector<IntegrationBlock> blocks, std::function<void()> sync,
                  std::function<void()> gathered)
     : kind_(kind), blocks_(std::move(blocks)), sync_(std::move(sync)),
-      gathered_(std::move(gathered)), evaluations_(blocks_.size(), 0) {}
+      gathered_(std::move(gathered)), evaluations_(blocks_.size(), 0) {
+  // Momentum is restored only for a free body: with supports it is not conserved anyway.
+  restore_momentum_ = kind_ == Integrator::SemiImplicitMomentum;
+  for (const auto& b : blocks_) {
+    restore_momentum_ = restore_momentum_ && b.rest;
+    for (std::uint8_t free : b.state->free_point) restore_momentum_ = restore_momentum_ && free;
+  }
+}
+
+void Stepper::semi_implicit_step(double dt) {
+  evaluate_all();
+  for (auto& b : blocks_) kick(*b.state, points(b), dt);
+  std::vector<MomentumBlock> parts;
+  std::vector<PointState*> states;
+  MomentumSums before;
+  if (restore_momentum_) {
+    for (auto& b : blocks_) {
+      parts.push_back({b.state, b.rest, points(b)});
+      states.push_back(b.state);
+    }
+    before = momentum_sums(parts);
+  }
+  for (auto& b : blocks_) b.filter.apply(*b.state, points(b));
+  if (restore_momentum_) restore_momentum(parts, before, states);
+  for (auto& b : blocks_) drift(*b.state, points(b), dt);
+  sync();
+}
 
 IndexSet Stepper::points(const IntegrationBlock& b) const {
   return b.points ? IndexSet::of(*b.points) : IndexSet::all(b.state->size());
@@ -57,13 +85,8 @@ void Stepper::step(double dt) {
       sync();
       break;
     case Integrator::SemiImplicit:
-      evaluate_all();
-      for (auto& b : blocks_) {
-        kick(*b.state, points(b), dt);
-        b.filter.apply(*b.state, points(b));
-        drift(*b.state, points(b), dt);
-      }
-      sync();
+    case Integrator::SemiImplicitMomentum:
+      semi_implicit_step(dt);
       break;
   }
 }

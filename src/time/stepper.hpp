@@ -21,7 +21,8 @@ struct IntegrationBlock {
   PointState* state = nullptr;
   ForceField* forces = nullptr;
   const std::vector<int>* points = nullptr;  // integrated points; nullptr = all of state
-  SemiImplicitFilter filter;                 // SemiImplicit only, built for the step dt
+  SemiImplicitFilter filter;                 // semi-implicit only, built for the step dt
+  const Vec3* rest = nullptr;                // rest positions (momentum restoration only)
 };
 
 class Stepper {
@@ -40,12 +41,14 @@ class Stepper {
   IndexSet points(const IntegrationBlock& b) const;
   void evaluate_all();
   void sync() { if (sync_) sync_(); }
+  void semi_implicit_step(double dt);
 
   Integrator kind_;
   std::vector<IntegrationBlock> blocks_;
   std::function<void()> sync_;
   std::function<void()> gathered_;
   std::vector<std::int64_t> evaluations_;
+  bool restore_momentum_ = false;  // SemiImplicitMomentum on a body with no fixed point
 };
 
 }  // namespace mrsim

@@ -1,0 +1,35 @@
+#pragma once
+// Momentum restoration after the semi-implicit filter (method.md §5.3; the correction step of
+// [DSB99]): eq. (5.1) makes each particle implicit against frozen neighbours, so it also brakes
+// rigid motion. For a free body, the linear and angular momentum the filter removed is given
+// back as a rigid velocity field a + ω × (x - c), which changes neither the elastic state nor
+// the filter's damping of vibrations. Serial sums in a fixed order: thread-count independent.
+#include <vector>
+
+#include "core/index_set.hpp"
+#include "time/point_state.hpp"
+
+namespace mrsim {
+
+/// Mass, first moment, linear and angular momentum (about the origin) of the free points.
+struct MomentumSums {
+  double mass = 0;
+  Vec3 moment = Vec3::Zero();    // Σ m x
+  Vec3 linear = Vec3::Zero();    // Σ m v
+  Vec3 angular = Vec3::Zero();   // Σ m x × v
+  Mat3 inertia = Mat3::Zero();   // Σ m (|x|² I - x xᵀ), about the origin
+};
+
+struct MomentumBlock {
+  const PointState* state = nullptr;
+  const Vec3* rest = nullptr;  // rest positions X (x = X + u)
+  IndexSet points;
+};
+
+MomentumSums momentum_sums(const std::vector<MomentumBlock>& blocks);
+
+/// Adds a + ω × (x - c) to every free point so that the momenta equal `before` again.
+void restore_momentum(const std::vector<MomentumBlock>& blocks, const MomentumSums& before,
+                      std::vector<PointState*>& states);
+
+}  // namespace mrsim
