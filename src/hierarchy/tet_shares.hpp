@@ -9,7 +9,10 @@
 
 namespace mrsim {
 
-/// share[t] = (active vertices of t)/4 for every tet in `tets`; other entries untouched.
+/// (active vertices of the tet)/4.
+double active_share(const Hierarchy& h, int level, const Tet& tet);
+
+/// share[t] = active_share of t for every tet in `tets`; other entries untouched.
 void active_tet_shares(const Hierarchy& h, int level, const std::vector<int>& tets,
                        std::vector<double>& share);
 

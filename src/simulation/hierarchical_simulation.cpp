@@ -57,6 +57,7 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   if (transfer_)
     gathered = [this] { transfer_forces(); };
   loads_ = setup.loads;
+  load_factors_.assign(loads_.size(), 0.0);
   if (!loads_.empty()) {
     external_.resize(L);
     for (int l = 0; l < L; ++l) {
@@ -132,10 +133,11 @@ void HierarchicalSimulation::resolve_loads() {
 // O(loaded points) per step: clear the previous shares, then add each load at its factor.
 void HierarchicalSimulation::update_loads(double t) {
   loads_on_support_.setZero();
+  for (size_t k = 0; k < loads_.size(); ++k) load_factors_[k] = load_factor(loads_[k].profile, t);
   for (const LoadTarget& target : load_targets_)
     if (target.level >= 0) external_[target.level][target.point].setZero();
   for (const LoadTarget& target : load_targets_) {
-    const Vec3 f = load_factor(loads_[target.load].profile, t) * target.force;
+    const Vec3 f = load_factors_[target.load] * target.force;
     if (target.level >= 0)
       external_[target.level][target.point] += f;
     else

@@ -89,6 +89,7 @@ class HierarchicalSimulation {
   double dt_ = 0;
   double time_ = 0, clock_ = 0;  // clock_: the time positions reach in the step under way
   std::vector<SurfaceLoad> loads_;
+  std::vector<double> load_factors_;  // per load, at the last update (scratch)
   Vec3 ghosts_on_support_ = Vec3::Zero(), loads_on_support_ = Vec3::Zero();
   struct LoadTarget {  // the share of a load an active point (level -1: the support) carries
     int load, level, point;

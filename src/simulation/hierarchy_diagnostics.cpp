@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "hierarchy/tet_shares.hpp"
 #include "physics/internal_force.hpp"
 #include "physics/stress.hpp"
 
@@ -19,11 +20,9 @@ double level_elastic_energy(const HierarchicalSimulation& sim, int l) {
   const Vec3* u = sim.state(l).u.data();
   double e = 0;
   for (int t : tets) {
-    int n = 0;
-    for (int v : m.geo.tets[t]) n += sim.hierarchy().state(l, v) == NodeState::Active;
     const Mat3 G = tet_gradient(m.geo.grad[t], m.geo.tets[t], u);
     const Mat3 E = m.law.strain == StrainMeasure::GreenLagrange ? green_strain(G) : cauchy_strain(G);
-    e += m.geo.volume[t] * energy_density(E, m.law) * n / 4.0;
+    e += m.geo.volume[t] * energy_density(E, m.law) * active_share(sim.hierarchy(), l, m.geo.tets[t]);
   }
   return e;
 }

@@ -51,12 +51,7 @@ void SpaceAdaptivity::split_worst(HierarchicalSimulation& sim, int frame,
   for (int l = 0; l < sim.num_levels(); ++l) active += sim.lists().active(l).size();
   for (const auto& [neg_c, l, p] : worst) {
     if (!sim.hierarchy().can_split(l, p)) continue;
-    const auto added = static_cast<std::int64_t>(sim.hierarchy().links(l).active_set.row(p).size());
-    if (s_.max_active_points > 0 && active + added > s_.max_active_points) break;
-    sim.split(l, p);
-    active += added;
-    split_frame_[l][p] = frame;
-    events.push_back({frame, "split", l, p});
+    if (!split_within_cap(sim, l, p, frame, active, events)) break;
   }
   split_islands(sim, frame, active, events);
 }
@@ -66,13 +61,20 @@ void SpaceAdaptivity::split_islands(HierarchicalSimulation& sim, int frame, std:
   for (int l = 0; l < s_.max_level; ++l)
     for (int p : sim.lists().active(l)) {
       if (!sim.hierarchy().can_split(l, p) || !surrounded(sim, l, p)) continue;
-      const auto added = static_cast<std::int64_t>(sim.hierarchy().links(l).active_set.row(p).size());
-      if (s_.max_active_points > 0 && active + added > s_.max_active_points) return;
-      sim.split(l, p);
-      active += added;
-      split_frame_[l][p] = frame;
-      events.push_back({frame, "split", l, p});
+      if (!split_within_cap(sim, l, p, frame, active, events)) return;
     }
+}
+
+// Splits p unless that would take the active points over the cap (then returns false).
+bool SpaceAdaptivity::split_within_cap(HierarchicalSimulation& sim, int l, int p, int frame,
+                                       std::int64_t& active, std::vector<HierarchyEvent>& events) {
+  const auto added = static_cast<std::int64_t>(sim.hierarchy().links(l).active_set.row(p).size());
+  if (s_.max_active_points > 0 && active + added > s_.max_active_points) return false;
+  sim.split(l, p);
+  active += added;
+  split_frame_[l][p] = frame;
+  events.push_back({frame, "split", l, p});
+  return true;
 }
 
 void SpaceAdaptivity::merge_calm(HierarchicalSimulation& sim, int frame,

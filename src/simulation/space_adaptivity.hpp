@@ -47,6 +47,8 @@ class SpaceAdaptivity {
   void split_worst(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events);
   void split_islands(HierarchicalSimulation& sim, int frame, std::int64_t& active,
                      std::vector<HierarchyEvent>& events);
+  bool split_within_cap(HierarchicalSimulation& sim, int l, int p, int frame, std::int64_t& active,
+                        std::vector<HierarchyEvent>& events);
   void merge_calm(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events);
 
   SpaceAdaptivitySettings s_;

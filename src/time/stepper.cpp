@@ -1,7 +1,6 @@
 #include "time/stepper.hpp"
 
 #include "time/explicit_updates.hpp"
-#include "time/momentum_restoration.hpp"
 
 namespace mrsim {
 
@@ -24,24 +23,24 @@ Stepper::Stepper(Integrator kind, std::vector<IntegrationBlock> blocks, std::fun
   for (const auto& b : blocks_) {
     restore_momentum_ = restore_momentum_ && b.rest;
     for (std::uint8_t free : b.state->free_point) restore_momentum_ = restore_momentum_ && free;
+    momentum_states_.push_back(b.state);
   }
+  momentum_parts_.reserve(blocks_.size());
 }
 
 void Stepper::semi_implicit_step(double dt) {
   evaluate_all();
   for (auto& b : blocks_) kick(*b.state, points(b), dt);
-  std::vector<MomentumBlock> parts;
-  std::vector<PointState*> states;
   MomentumSums before;
   if (restore_momentum_) {
-    for (auto& b : blocks_) {
-      parts.push_back({b.state, b.rest, points(b)});
-      states.push_back(b.state);
-    }
-    before = momentum_sums(parts);
+    // Point lists change with splits and merges: their views are taken anew (no allocation,
+    // the vectors keep their capacity).
+    momentum_parts_.clear();
+    for (auto& b : blocks_) momentum_parts_.push_back({b.state, b.rest, points(b)});
+    before = momentum_sums(momentum_parts_);
   }
   for (auto& b : blocks_) b.filter.apply(*b.state, points(b));
-  if (restore_momentum_) restore_momentum(parts, before, states);
+  if (restore_momentum_) restore_momentum(momentum_parts_, before, momentum_states_);
   for (auto& b : blocks_) drift(*b.state, points(b), dt);
   sync();
 }

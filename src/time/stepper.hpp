@@ -12,6 +12,7 @@
 #include "core/index_set.hpp"
 #include "time/force_field.hpp"
 #include "time/integrator_kind.hpp"
+#include "time/momentum_restoration.hpp"
 #include "time/point_state.hpp"
 #include "time/semi_implicit_filter.hpp"
 
@@ -49,6 +50,8 @@ class Stepper {
   std::function<void()> gathered_;
   std::vector<std::int64_t> evaluations_;
   bool restore_momentum_ = false;  // SemiImplicitMomentum on a body with no fixed point
+  std::vector<MomentumBlock> momentum_parts_;  // scratch, one per block
+  std::vector<PointState*> momentum_states_;
 };
 
 }  // namespace mrsim

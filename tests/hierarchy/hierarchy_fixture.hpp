@@ -1,6 +1,7 @@
 #pragma once
 // Three independent meshes of one box (not nested: different resolutions, jittered interiors),
 // the situation of method.md §4.1.
+#include <cstdint>
 #include <memory>
 #include <random>
 
@@ -26,6 +27,15 @@ inline std::vector<TetMesh> jittered_box_levels(const std::vector<std::array<int
     meshes.push_back(std::move(m));
   }
   return meshes;
+}
+
+/// Dirichlet masks per level (HierarchySetup::fixed): 1 where `fixed(X)` holds at rest.
+template <class Pred>
+std::vector<std::vector<std::uint8_t>> fixed_where(const std::vector<TetMesh>& meshes, Pred fixed) {
+  std::vector<std::vector<std::uint8_t>> masks(meshes.size());
+  for (size_t l = 0; l < meshes.size(); ++l)
+    for (const Vec3& X : meshes[l].points) masks[l].push_back(fixed(X) ? 1 : 0);
+  return masks;
 }
 
 struct ThreeLevels {

@@ -160,6 +160,11 @@ def test_liver_press(binary, source, tmp):
     """A local press refines under the load and coarsens back when released (issue 4)."""
     out = os.path.join(tmp, "liver_press")
     scenario = os.path.join(source, "scenarios", "liver_press.yaml")
+    bad = os.path.join(tmp, "load_off_the_body")
+    r = run(binary, "run", scenario, "-o", bad, "--set", "loads.0.box.min=[1,1,1]",
+            "--set", "loads.0.box.max=[2,2,2]")
+    check(r.returncode == 2 and "loads[0].box" in r.stderr and not os.path.exists(bad),
+          "a load box off the body exits 2 naming it, before writing anything")
     r = run(binary, "run", scenario, "-o", out, "-q", "--set", "time.duration=1.2")
     check(r.returncode == 0, "liver_press runs to the end (exit %d) %s" % (r.returncode, r.stderr[-300:]))
     with h5py.File(os.path.join(out, "log.h5"), "r") as h5:

@@ -186,12 +186,7 @@ TEST(HierarchicalSimulation, EverythingSplitIsTheFinestMeshAlone) {
   const Box3 box;
   HierarchySetup hs = setup(StrainMeasure::GreenLagrange);
   hs.gravity = Vec3(0, 0, -9.81);
-  hs.fixed.resize(3);
-  for (int l = 0; l < 3; ++l) {
-    hs.fixed[l].assign(box.meshes[l].points.size(), 0);
-    for (size_t i = 0; i < box.meshes[l].points.size(); ++i)
-      hs.fixed[l][i] = box.meshes[l].points[i].x() < 1e-12;
-  }
+  hs.fixed = mrsim::testing::fixed_where(box.meshes, [](const Vec3& X) { return X.x() < 1e-12; });
   HierarchicalSimulation sim(box.ptrs(), hs);
   for (int l = 0; l < 2; ++l) {
     for (int p = 0; p < sim.model(l).num_points(); ++p)
@@ -249,12 +244,7 @@ TEST(HierarchicalSimulation, EnergyCouplingConservesEnergyAcrossAnInterface) {
     hs.integrator = Integrator::StoermerVerlet;
     hs.dt = 2e-5;
     hs.coupling = c;
-    hs.fixed.resize(2);
-    for (int l = 0; l < 2; ++l) {
-      hs.fixed[l].assign(meshes[l].points.size(), 0);
-      for (size_t i = 0; i < meshes[l].points.size(); ++i)
-        hs.fixed[l][i] = meshes[l].points[i].x() < 1e-9;
-    }
+    hs.fixed = mrsim::testing::fixed_where(meshes, [](const Vec3& X) { return X.x() < 1e-9; });
     HierarchicalSimulation sim({&meshes[0], &meshes[1]}, hs);
     sim.split(0, 5);
     sim.apply_changes();
@@ -288,12 +278,7 @@ TEST(HierarchicalSimulation, DirichletPointsStayAtRestOnEveryLevelThroughSplits)
   const Box3 box;
   HierarchySetup hs = setup(StrainMeasure::GreenLagrange);
   hs.gravity = Vec3(0, 0, -9.81);
-  hs.fixed.resize(3);
-  for (int l = 0; l < 3; ++l) {
-    hs.fixed[l].assign(box.meshes[l].points.size(), 0);
-    for (size_t i = 0; i < box.meshes[l].points.size(); ++i)
-      hs.fixed[l][i] = box.meshes[l].points[i].x() <= 0.03;
-  }
+  hs.fixed = mrsim::testing::fixed_where(box.meshes, [](const Vec3& X) { return X.x() <= 0.03; });
   HierarchicalSimulation sim(box.ptrs(), hs);
   sim.advance(300);
   sim.fill_inactive();  // what every output frame does

@@ -25,12 +25,7 @@ HierarchySetup clamped_beam_setup(const std::vector<TetMesh>& meshes, Coupling c
   hs.law.lambda = 576923;
   hs.law.mu = 384615;
   hs.coupling = coupling;
-  hs.fixed.resize(meshes.size());
-  for (size_t l = 0; l < meshes.size(); ++l) {
-    hs.fixed[l].assign(meshes[l].points.size(), 0);
-    for (size_t i = 0; i < meshes[l].points.size(); ++i)
-      hs.fixed[l][i] = meshes[l].points[i].x() < 1e-9;
-  }
+  hs.fixed = mrsim::testing::fixed_where(meshes, [](const Vec3& X) { return X.x() < 1e-9; });
   return hs;
 }
 

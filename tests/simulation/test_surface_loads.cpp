@@ -85,12 +85,7 @@ PressResult press(const std::vector<TetMesh>& meshes, bool adaptive, double rele
   hs.law.psi = 20;
   hs.law.density = 1000;
   hs.dt = 5e-5;
-  hs.fixed.resize(meshes.size());
-  for (size_t l = 0; l < meshes.size(); ++l) {
-    hs.fixed[l].assign(meshes[l].points.size(), 0);
-    for (size_t i = 0; i < meshes[l].points.size(); ++i)
-      hs.fixed[l][i] = meshes[l].points[i].z() < 1e-9;
-  }
+  hs.fixed = mrsim::testing::fixed_where(meshes, [](const Vec3& X) { return X.z() < 1e-9; });
   SurfaceLoadSpec spec = top_patch(1.0);
   spec.profile = {{0.0, 0.0}, {0.1, 1.0}};
   if (release > 0) spec.profile.insert(spec.profile.end(), {{release, 1.0}, {release + 0.05, 0.0}});
