@@ -47,8 +47,10 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
     blocks[l].state = &s;
     blocks[l].forces = forces_[l].get();
     blocks[l].points = &lists_->active(l);
-    if (is_semi_implicit(setup.integrator))
-      blocks[l].filter = SemiImplicitFilter(*models_[l], s.inv_mass, setup.dt);
+    if (is_semi_implicit(setup.integrator)) {
+      filters_.push_back(std::make_unique<SemiImplicitFilter>(*models_[l]));
+      blocks[l].filter = filters_.back().get();
+    }
     blocks[l].rest = meshes[l]->points.data();
     fields_.push_back({s.u.data(), s.v.data()});
     level_forces_.push_back(s.f.data());

@@ -79,6 +79,7 @@ class HierarchicalSimulation {
   std::unique_ptr<Hierarchy> hierarchy_;
   std::unique_ptr<StatusLists> lists_;
   std::vector<std::unique_ptr<LevelForceField>> forces_;
+  std::vector<std::unique_ptr<SemiImplicitFilter>> filters_;  // per level, semi-implicit only
   std::unique_ptr<Stepper> stepper_;
   std::vector<LevelFields> fields_;
   std::vector<Vec3*> level_forces_;  // f of every level, for the ghost force transfer

@@ -4,13 +4,21 @@
 
 namespace mrsim {
 
-void kick(PointState& s, IndexSet points, double dt) {
+void kick(PointState& s, IndexSet points, double dt) { kick(s, s.f.data(), points, dt); }
+
+void kick(PointState& s, const Vec3* force, IndexSet points, double dt) {
   const int n = points.count;
 #pragma omp parallel for schedule(static) if (n >= parallel_threshold())
   for (int k = 0; k < n; ++k) {
     const int i = points[k];
-    if (s.free_point[i]) s.v[i] += (dt * s.inv_mass[i]) * s.f[i];
+    if (s.free_point[i]) s.v[i] += (dt * s.inv_mass[i]) * force[i];
   }
+}
+
+void save_forces(const PointState& s, IndexSet points, Vec3* saved) {
+  const int n = points.count;
+#pragma omp parallel for schedule(static) if (n >= parallel_threshold())
+  for (int k = 0; k < n; ++k) saved[points[k]] = s.f[points[k]];
 }
 
 void drift(PointState& s, IndexSet points, double dt) {

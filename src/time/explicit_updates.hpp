@@ -8,6 +8,10 @@ namespace mrsim {
 
 /// v += dt · f / m
 void kick(PointState& s, IndexSet points, double dt);
+/// v += dt · force / m, with another force array than s.f (Störmer–Verlet's saved force)
+void kick(PointState& s, const Vec3* force, IndexSet points, double dt);
+/// saved[i] = s.f[i] on `points`
+void save_forces(const PointState& s, IndexSet points, Vec3* saved);
 /// u += dt · v
 void drift(PointState& s, IndexSet points, double dt);
 

@@ -12,6 +12,9 @@ struct PointState {
   std::vector<Vec3> u, v, f;             // displacement (m), velocity (m/s), last total force (N)
   std::vector<double> inv_mass;          // 1/m_i, 1/kg
   std::vector<std::uint8_t> free_point;  // 1 if integrated, 0 if fixed
+  // Störmer–Verlet only: the force of each point's last step, for its next first half-kick.
+  // Kept apart from f because with time levels f is recomputed for other points in between.
+  std::vector<Vec3> f_kick;
 
   void resize(int n) {
     u.assign(n, Vec3::Zero());

@@ -29,20 +29,17 @@ std::vector<Mat3> point_jacobians(const LevelModel& model) {
   return J;
 }
 
-SemiImplicitFilter::SemiImplicitFilter(const LevelModel& model, const std::vector<double>& inv_mass,
-                                       double dt) {
-  const std::vector<Mat3> J = point_jacobians(model);
-  w_.resize(J.size());
-  for (size_t i = 0; i < J.size(); ++i)
-    w_[i] = (Mat3::Identity() - (dt * dt * inv_mass[i]) * J[i]).inverse();
-}
+SemiImplicitFilter::SemiImplicitFilter(const LevelModel& model)
+    : jacobian_(point_jacobians(model)) {}
 
-void SemiImplicitFilter::apply(PointState& s, IndexSet points) const {
+void SemiImplicitFilter::apply(PointState& s, IndexSet points, double dt) const {
   const int n = points.count;
 #pragma omp parallel for schedule(static) if (n >= parallel_threshold())
   for (int k = 0; k < n; ++k) {
     const int i = points[k];
-    if (s.free_point[i]) s.v[i] = w_[i] * s.v[i];
+    if (!s.free_point[i]) continue;
+    const Mat3 W = (Mat3::Identity() - (dt * dt * s.inv_mass[i]) * jacobian_[i]).inverse();
+    s.v[i] = W * s.v[i];
   }
 }
 

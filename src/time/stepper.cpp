@@ -24,13 +24,14 @@ Stepper::Stepper(Integrator kind, std::vector<IntegrationBlock> blocks, std::fun
     restore_momentum_ = restore_momentum_ && b.rest;
     for (std::uint8_t free : b.state->free_point) restore_momentum_ = restore_momentum_ && free;
     momentum_states_.push_back(b.state);
+    if (kind_ == Integrator::StoermerVerlet) b.state->f_kick.resize(b.state->size(), Vec3::Zero());
   }
   momentum_parts_.reserve(blocks_.size());
 }
 
 void Stepper::semi_implicit_step(double dt) {
   evaluate_all();
-  for (auto& b : blocks_) kick(*b.state, points(b), dt);
+  for (auto& b : blocks_) kick(*b.state, points(b), dt * b.dt_scale);
   MomentumSums before;
   if (restore_momentum_) {
     // Point lists change with splits and merges: their views are taken anew (no allocation,
@@ -39,10 +40,30 @@ void Stepper::semi_implicit_step(double dt) {
     for (auto& b : blocks_) momentum_parts_.push_back({b.state, b.rest, points(b)});
     before = momentum_sums(momentum_parts_);
   }
-  for (auto& b : blocks_) b.filter.apply(*b.state, points(b));
+  for (auto& b : blocks_) b.filter->apply(*b.state, points(b), dt * b.dt_scale);
   if (restore_momentum_) restore_momentum(momentum_parts_, before, momentum_states_);
-  for (auto& b : blocks_) drift(*b.state, points(b), dt);
+  for (auto& b : blocks_) drift(*b.state, points(b), dt * b.dt_scale);
   sync();
+}
+
+// Kick-drift-kick: the force at the end of a point's step is the one of its next first
+// half-kick (kept in f_kick); the damping force sees the half-step velocity.
+void Stepper::stoermer_verlet_step(double dt) {
+  for (auto& b : blocks_) {
+    kick(*b.state, b.state->f_kick.data(), points(b), 0.5 * dt * b.dt_scale);
+    drift(*b.state, points(b), dt * b.dt_scale);
+  }
+  sync();
+  evaluate_all();
+  for (auto& b : blocks_) {
+    kick(*b.state, points(b), 0.5 * dt * b.dt_scale);
+    keep_forces(*b.state, points(b));
+  }
+  sync();
+}
+
+void Stepper::keep_forces(PointState& s, IndexSet points) const {
+  if (kind_ == Integrator::StoermerVerlet) save_forces(s, points, s.f_kick.data());
 }
 
 IndexSet Stepper::points(const IntegrationBlock& b) const {
@@ -51,6 +72,7 @@ IndexSet Stepper::points(const IntegrationBlock& b) const {
 
 void Stepper::evaluate_all() {
   for (size_t k = 0; k < blocks_.size(); ++k) {
+    if (!blocks_[k].forces) continue;
     PointState& s = *blocks_[k].state;
     evaluations_[k] += blocks_[k].forces->evaluate(s.u.data(), s.v.data(), s.f.data());
   }
@@ -58,7 +80,9 @@ void Stepper::evaluate_all() {
 }
 
 void Stepper::start() {
-  if (kind_ == Integrator::StoermerVerlet) evaluate_all();
+  if (kind_ != Integrator::StoermerVerlet) return;
+  evaluate_all();
+  for (auto& b : blocks_) keep_forces(*b.state, points(b));
 }
 
 void Stepper::step(double dt) {
@@ -66,22 +90,13 @@ void Stepper::step(double dt) {
     case Integrator::ModifiedEuler:
       evaluate_all();
       for (auto& b : blocks_) {
-        kick(*b.state, points(b), dt);
-        drift(*b.state, points(b), dt);
+        kick(*b.state, points(b), dt * b.dt_scale);
+        drift(*b.state, points(b), dt * b.dt_scale);
       }
       sync();
       break;
     case Integrator::StoermerVerlet:
-      // Kick-drift-kick: the force at the end of a step is the one at the start of the next;
-      // the damping force sees the half-step velocity.
-      for (auto& b : blocks_) {
-        kick(*b.state, points(b), 0.5 * dt);
-        drift(*b.state, points(b), dt);
-      }
-      sync();
-      evaluate_all();
-      for (auto& b : blocks_) kick(*b.state, points(b), 0.5 * dt);
-      sync();
+      stoermer_verlet_step(dt);
       break;
     case Integrator::SemiImplicit:
     case Integrator::SemiImplicitMomentum:

@@ -5,6 +5,9 @@
 // order of the blocks; `sync` runs after every position update (the ghost refresh, §4.8) and
 // `gathered` after every force evaluation of all blocks (the ghost force transfer).
 // Exactly one force evaluation per point per step for every scheme.
+// Time levels (method.md §5.2, §5.4): a block integrates with dt × dt_scale, and several blocks
+// may integrate points of one state with one force field: only the block that names the field
+// evaluates it.
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -20,10 +23,11 @@ namespace mrsim {
 
 struct IntegrationBlock {
   PointState* state = nullptr;
-  ForceField* forces = nullptr;
+  ForceField* forces = nullptr;              // nullptr: another block evaluates this state
   const std::vector<int>* points = nullptr;  // integrated points; nullptr = all of state
-  SemiImplicitFilter filter;                 // semi-implicit only, built for the step dt
+  const SemiImplicitFilter* filter = nullptr;  // semi-implicit only
   const Vec3* rest = nullptr;                // rest positions (momentum restoration only)
+  double dt_scale = 1.0;                     // this block's step is dt × dt_scale
 };
 
 class Stepper {
@@ -37,12 +41,18 @@ class Stepper {
   void step(double dt);
   std::int64_t force_evaluations(int block) const { return evaluations_[block]; }
   Integrator kind() const { return kind_; }
+  /// The blocks, whose point lists and dt_scale may be changed between steps.
+  IntegrationBlock& block(int k) { return blocks_[k]; }
+  /// Störmer–Verlet: the current forces (s.f) of `points` become their next first half-kick
+  /// (after a force evaluation made outside the stepper, e.g. when the point sets changed).
+  void keep_forces(PointState& s, IndexSet points) const;
 
  private:
   IndexSet points(const IntegrationBlock& b) const;
   void evaluate_all();
   void sync() { if (sync_) sync_(); }
   void semi_implicit_step(double dt);
+  void stoermer_verlet_step(double dt);
 
   Integrator kind_;
   std::vector<IntegrationBlock> blocks_;

@@ -66,12 +66,11 @@ double growth(const LevelModel& m, Integrator kind, double dt, int steps, bool c
     if (s.free_point[i]) s.u[i] = 1e-6 * Vec3(d(rng), d(rng), d(rng));
   }
   ElasticOnly forces(m);
-  SemiImplicitFilter filter;
-  if (is_semi_implicit(kind)) filter = SemiImplicitFilter(m, s.inv_mass, dt);
+  SemiImplicitFilter filter(m);
   std::vector<IntegrationBlock> blocks(1);
   blocks[0].state = &s;
   blocks[0].forces = &forces;
-  blocks[0].filter = filter;
+  blocks[0].filter = &filter;
   blocks[0].rest = m.mesh->points.data();
   Stepper integ(kind, std::move(blocks));
   integ.start();
@@ -154,10 +153,11 @@ TEST(Stability, MomentumRestoringSemiImplicitKeepsTheMotionOfAFreeBody) {
       s.v[i] = v0 + w0.cross(mesh.points[i] - c);
     }
     ElasticOnly forces(m);
+    const SemiImplicitFilter filter(m);
     std::vector<IntegrationBlock> blocks(1);
     blocks[0].state = &s;
     blocks[0].forces = &forces;
-    blocks[0].filter = SemiImplicitFilter(m, s.inv_mass, dt);
+    blocks[0].filter = &filter;
     blocks[0].rest = mesh.points.data();
     Stepper integ(kind, std::move(blocks));
     integ.start();
