@@ -12,14 +12,26 @@ void to_tets(const std::vector<int>& ghosts, const Embedding& emb, const TetMesh
   }
 }
 
-}  // namespace
-
-void transfer_ghost_forces(const Hierarchy& h, const StatusLists& lists, std::vector<Vec3*>& f) {
+// iface(l), sub(l): the level's interface and subdivided ghosts to transfer.
+template <class Iface, class Sub>
+void transfer(const Hierarchy& h, Iface iface, Sub sub, std::vector<Vec3*>& f) {
   const int L = h.num_levels();
   for (int l = L - 1; l >= 1; --l)
-    to_tets(lists.ghost_iface(l), h.links(l).parent_tet, *h.level(l - 1).mesh, f[l], f[l - 1]);
+    to_tets(iface(l), h.links(l).parent_tet, *h.level(l - 1).mesh, f[l], f[l - 1]);
   for (int l = 0; l + 1 < L; ++l)
-    to_tets(lists.ghost_sub(l), h.links(l).child_tet, *h.level(l + 1).mesh, f[l], f[l + 1]);
+    to_tets(sub(l), h.links(l).child_tet, *h.level(l + 1).mesh, f[l], f[l + 1]);
+}
+
+}  // namespace
+
+void transfer_ghost_forces(const Hierarchy& h, const GhostSelection& ghosts, std::vector<Vec3*>& f) {
+  transfer(h, [&](int l) -> const std::vector<int>& { return *ghosts.iface[l]; },
+           [&](int l) -> const std::vector<int>& { return *ghosts.sub[l]; }, f);
+}
+
+void transfer_ghost_forces(const Hierarchy& h, const StatusLists& lists, std::vector<Vec3*>& f) {
+  transfer(h, [&](int l) -> const std::vector<int>& { return lists.ghost_iface(l); },
+           [&](int l) -> const std::vector<int>& { return lists.ghost_sub(l); }, f);
 }
 
 }  // namespace mrsim

@@ -16,4 +16,14 @@ namespace mrsim {
 /// Serial and in list order: the result does not depend on the thread count. O(ghosts).
 void transfer_ghost_forces(const Hierarchy& h, const StatusLists& lists, std::vector<Vec3*>& f);
 
+/// Some ghosts per level, each list a subsequence of the level's StatusLists list.
+struct GhostSelection {
+  std::vector<const std::vector<int>*> iface, sub;  // [level]
+};
+
+/// The same transfer for the selected ghosts only (time levels: the ghosts whose force reaches
+/// the particles integrated in a sub-step). A source receives exactly what the whole transfer
+/// gives it when every ghost it depends on is selected, in the same order.
+void transfer_ghost_forces(const Hierarchy& h, const GhostSelection& ghosts, std::vector<Vec3*>& f);
+
 }  // namespace mrsim

@@ -20,7 +20,7 @@ struct LevelFrameView {
   std::span<const Vec3> velocity;           // m/s
   std::span<const Vec3> force;              // N, total force last evaluated on each point
   std::span<const std::int8_t> status;      // PointStatus values
-  std::span<const std::int32_t> time_level; // k such that dt = frame_dt / 2^k
+  std::span<const std::int32_t> time_level; // column of /frames/time_levels, -1: not integrated
   std::span<const double> criterion;        // h |Δu| (method.md §3.3)
   std::span<const double> mass;             // kg, lumped
 };
@@ -36,6 +36,8 @@ struct FrameRecord {
   std::vector<std::int64_t> active;             // [L]
   std::vector<std::int64_t> ghosts;             // [L]
   std::vector<std::int64_t> force_evaluations;  // [L], cumulative point-force evaluations
+  std::vector<std::int64_t> time_levels;             // [C] particles per time level
+  std::vector<std::int64_t> time_level_evaluations;  // [C] cumulative, per time level
   std::vector<std::span<const std::int8_t>> status;  // [L] x N_l
 };
 

@@ -30,9 +30,12 @@ void check_level_view(const LevelFrameView& view, int level) {
   check_size(view.mass.size(), n, where, "mass");
 }
 
-void check_frame_record(const FrameRecord& record, std::span<const std::size_t> points_per_level) {
+void check_frame_record(const FrameRecord& record, std::span<const std::size_t> points_per_level,
+                        std::size_t time_levels) {
   const std::size_t levels = points_per_level.size();
   const std::string where = "frame " + std::to_string(record.frame);
+  check_size(record.time_levels.size(), time_levels, where, "time_levels");
+  check_size(record.time_level_evaluations.size(), time_levels, where, "time_level_evaluations");
   check_size(record.active.size(), levels, where, "active");
   check_size(record.ghosts.size(), levels, where, "ghosts");
   check_size(record.force_evaluations.size(), levels, where, "force_evaluations");

@@ -13,6 +13,8 @@ void check_level_view(const LevelFrameView& view, int level);
 
 /// `record` has one entry per level in every per-level vector, and `status[k]` has
 /// `points_per_level[k]` values.
-void check_frame_record(const FrameRecord& record, std::span<const std::size_t> points_per_level);
+/// and `time_levels` values per time-level vector.
+void check_frame_record(const FrameRecord& record, std::span<const std::size_t> points_per_level,
+                        std::size_t time_levels);
 
 }  // namespace mrsim

@@ -4,6 +4,7 @@
 #include <span>
 
 #include "io/hdf5_group.hpp"
+#include "io/hdf5_static_dataset.hpp"
 
 namespace mrsim::h5 {
 namespace {
@@ -45,9 +46,22 @@ void append_one(ExtendibleDataset& dataset, const T& value) {
 
 }  // namespace
 
-FrameTable::FrameTable(hid_t file_id, std::size_t levels, const std::string& file)
-    : file_(file), group_(create_group(file_id, "frames", {file_, "/frames"})) {
+FrameTable::FrameTable(hid_t file_id, std::size_t levels,
+                       const std::vector<double>& time_level_steps, const std::string& file)
+    : file_(file), group_(create_group(file_id, "frames", {file_, "/frames"})),
+      time_levels_count_(time_level_steps.size()) {
   const hid_t g = group_.get();
+  write_static_dataset(g, "time_level_step", std::span<const double>(time_level_steps),
+                       {time_level_steps.size()}, "s", {file_, "/frames/time_level_step"});
+  time_levels_ = {g, "/frames",
+                  per_level_spec("time_levels", time_levels_count_,
+                                 "integrated particles per time level at the end of the frame; "
+                                 "column k steps time_level_step[k]"),
+                  file_};
+  time_level_evaluations_ = {g, "/frames",
+                             per_level_spec("time_level_evaluations", time_levels_count_,
+                                            "cumulative point-force evaluations per time level"),
+                             file_};
   time_ = {g, "/frames", scalar_spec<double>("time", "s", "simulated time of the frame"), file_};
   kinetic_energy_ = {g, "/frames",
                      scalar_spec<double>("kinetic_energy", "J", "sum of m v^2 / 2"), file_};
@@ -79,13 +93,16 @@ void FrameTable::append(const FrameRecord& record) {
   active_.append(std::span<const std::int64_t>(record.active));
   ghosts_.append(std::span<const std::int64_t>(record.ghosts));
   force_evaluations_.append(std::span<const std::int64_t>(record.force_evaluations));
+  time_levels_.append(std::span<const std::int64_t>(record.time_levels));
+  time_level_evaluations_.append(std::span<const std::int64_t>(record.time_level_evaluations));
   support_reaction_.append(std::span<const double>(record.support_reaction.data(), 3));
   append_one(frame_, static_cast<std::int32_t>(record.frame));
 }
 
 void FrameTable::close() {
   for (ExtendibleDataset* d : {&time_, &kinetic_energy_, &elastic_energy_, &wall_time_, &active_,
-                               &ghosts_, &force_evaluations_, &support_reaction_, &frame_}) {
+                               &ghosts_, &force_evaluations_, &support_reaction_, &time_levels_,
+                               &time_level_evaluations_, &frame_}) {
     d->close();
   }
   check(group_.close(), {file_, "/frames"}, "close group");

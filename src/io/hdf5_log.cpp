@@ -60,7 +60,9 @@ struct Hdf5Log::Impl {
       levels.emplace_back(levels_group.get(), static_cast<int>(k), *header.levels[k], file);
       points_per_level.push_back(levels.back().points());
     }
-    frames.emplace(file_id.get(), header.levels.size(), file);
+    if (header.time_level_steps.empty())
+      throw std::invalid_argument("Hdf5Log: no time level step");
+    frames.emplace(file_id.get(), header.levels.size(), header.time_level_steps, file);
     events.emplace(file_id.get(), file);
     flush();  // the header alone is already a valid, readable file
   }
@@ -93,7 +95,7 @@ Hdf5Log::~Hdf5Log() {
 
 void Hdf5Log::append_frame(const FrameRecord& record) {
   if (!impl_) throw std::logic_error("Hdf5Log::append_frame after close");
-  check_frame_record(record, impl_->points_per_level);
+  check_frame_record(record, impl_->points_per_level, impl_->frames->time_levels());
   for (std::size_t k = 0; k < impl_->levels.size(); ++k) {
     impl_->levels[k].append_status(record.status[k]);
   }

@@ -16,6 +16,9 @@ struct Hdf5LogHeader {
   std::string scenario_yaml;  // the resolved scenario text
   std::string start_time;     // ISO 8601, UTC
   std::vector<const TetMesh*> levels;  // rest positions and tets stored under /levels/level_k
+  // Step (s) of each column of /frames/time_levels: frame_dt / 2^k with time levels, else the
+  // one step frame_dt / substeps. Stored as /frames/time_level_step. At least one.
+  std::vector<double> time_level_steps;
 };
 
 class Hdf5Log {

@@ -74,6 +74,11 @@ struct SpaceAdaptivitySpec {
   Coupling coupling = Coupling::Energy;
 };
 
+struct TimeAdaptivitySpec {
+  bool enabled = false;
+  double velocity_change = 0.01;  // β of method.md §5.2 (dimensionless)
+};
+
 struct OutputSpec {
   std::filesystem::path dir;  // output folder
   int every = 1;              // write a VTK frame every N display frames
@@ -92,6 +97,7 @@ struct Scenario {
   InitialSpec initial;
   TimeSpec time;
   SpaceAdaptivitySpec space;
+  TimeAdaptivitySpec time_levels;
   OutputSpec output;
   nlohmann::json resolved;  // the validated document, every default explicit, material.derived
 };

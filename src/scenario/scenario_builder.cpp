@@ -107,6 +107,8 @@ Scenario build_scenario(const json& resolved, const std::filesystem::path& sourc
                vec3(resolved["initial"]["angular_velocity"])};
   s.time = time_spec(resolved["time"]);
   s.space = space_spec(resolved["adaptivity"]["space"]);
+  s.time_levels = {resolved["adaptivity"]["time"]["enabled"].get<bool>(),
+                   resolved["adaptivity"]["time"]["velocity_change"].get<double>()};
   s.output = output_spec(resolved["output"]);
   s.resolved = resolved;
   return s;

@@ -74,6 +74,14 @@ void check_material(const json& material, std::vector<Issue>& issues) {
 
 void check_adaptivity(const json& document, std::vector<Issue>& issues) {
   const json& space = document["adaptivity"]["space"];
+  const json& time = document["time"];
+  if (document["adaptivity"]["time"]["enabled"].get<bool>() && time.contains("substeps")) {
+    const auto n = time["substeps"].get<std::int64_t>();
+    if ((n & (n - 1)) != 0)
+      issues.push_back({"/time/substeps",
+                        "must be a power of two with adaptivity.time.enabled (time levels halve "
+                        "the step: frame_dt / 2^k), got " + std::to_string(n)});
+  }
   const std::size_t levels = document["object"]["levels"].size();
   if (space.contains("max_level") && space["max_level"].get<std::size_t>() >= levels)
     issues.push_back({"/adaptivity/space/max_level",

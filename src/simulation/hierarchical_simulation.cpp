@@ -5,6 +5,7 @@
 
 #include "hierarchy/ghost_force_transfer.hpp"
 #include "simulation/diagnostics.hpp"
+#include "time/explicit_updates.hpp"
 
 namespace mrsim {
 
@@ -24,7 +25,10 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   fixed_.resize(L);
   fixed_ghosts_.resize(L);
   stale_.resize(L);
-  std::vector<IntegrationBlock> blocks(L);
+  // With time levels each level has two blocks: the W-cycle integrates two time levels per
+  // sub-step (method.md §5.4); the first block evaluates the level's forces for both.
+  const int per_level = setup.time_levels ? 2 : 1;
+  std::vector<IntegrationBlock> blocks(L * per_level);
   for (int l = 0; l < L; ++l) {
     PointState& s = states_[l];
     s.resize(models_[l]->num_points());
@@ -44,14 +48,16 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
       forces_[l]->couple(hierarchy_.get(), lists_.get(), l);
     else
       forces_[l]->serve(&lists_->active(l));
-    blocks[l].state = &s;
-    blocks[l].forces = forces_[l].get();
-    blocks[l].points = &lists_->active(l);
-    if (is_semi_implicit(setup.integrator)) {
+    if (is_semi_implicit(setup.integrator))
       filters_.push_back(std::make_unique<SemiImplicitFilter>(*models_[l]));
-      blocks[l].filter = filters_.back().get();
+    for (int b = 0; b < per_level; ++b) {
+      IntegrationBlock& block = blocks[l * per_level + b];
+      block.state = &s;
+      block.forces = b == 0 ? forces_[l].get() : nullptr;
+      block.points = setup.time_levels ? &nobody_ : &lists_->active(l);
+      block.filter = filters_.empty() ? nullptr : filters_.back().get();
+      block.rest = meshes[l]->points.data();
     }
-    blocks[l].rest = meshes[l]->points.data();
     fields_.push_back({s.u.data(), s.v.data()});
     level_forces_.push_back(s.f.data());
   }
@@ -72,7 +78,93 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   stepper_ = std::make_unique<Stepper>(setup.integrator, std::move(blocks),
                                        [this] { after_positions(); }, std::move(gathered));
   dt_ = setup.dt;
-  stepper_->start();
+  steps_per_frame_ = setup.steps_per_frame;
+  if (setup.time_levels) {
+    frame_dt_ = setup.time_levels->frame_dt;
+    std::vector<const LevelModel*> models;
+    std::vector<LevelForceField*> fields;
+    for (int l = 0; l < L; ++l) {
+      models.push_back(models_[l].get());
+      fields.push_back(forces_[l].get());
+    }
+    time_levels_ = std::make_unique<TimeAdaptivity>(*hierarchy_, *lists_, models, fields, states_,
+                                                    *setup.time_levels);
+  }
+  restart_integrator();
+}
+
+// After the point sets changed: Störmer–Verlet needs the force at the current state. With time
+// levels that is one evaluation of every served point (any integrator: the outputs use it).
+void HierarchicalSimulation::restart_integrator() {
+  if (!time_levels_) {
+    stepper_->start();
+    return;
+  }
+  compute_forces();
+  for (int l = 0; l < num_levels(); ++l)
+    stepper_->keep_forces(states_[l], IndexSet::of(lists_->active(l)));
+}
+
+void HierarchicalSimulation::advance_frame(std::vector<TimeLevelChange>* changes) {
+  if (!time_levels_) {
+    advance(steps_per_frame_);
+    return;
+  }
+  std::vector<TimeLevelChange>& out = changes ? *changes : changes_scratch_;
+  changes_scratch_.clear();
+  run_w_cycle(out);
+  ++frames_;
+  time_ = static_cast<double>(frames_) * frame_dt_;
+  time_levels_->end_frame(out);
+  // Every particle is at the end of the frame: one full evaluation (not counted as work)
+  // gives the outputs their forces and support reaction, and Störmer–Verlet's next half-kick
+  // a force at one common time.
+  restart_integrator();
+}
+
+// method.md §5.4 (time/w_cycle.hpp): at each tick that kicks somebody, every particle first
+// drifts to that tick and the ghosts follow, then the particles of (at most) two time levels get
+// their forces and kicks. With every particle on the finest level this is exactly the global
+// step (kick, drift, ghost refresh).
+void HierarchicalSimulation::run_w_cycle(std::vector<TimeLevelChange>& changes) {
+  TimeAdaptivity& ta = *time_levels_;
+  const WCycle& wc = ta.schedule();
+  const double tick = frame_dt_ / wc.ticks_per_frame();
+  const double frame_start = time_;
+  int drifted = 0;  // tick the positions are at
+  ta.begin_frame();
+  in_sub_step_ = true;
+  while (!ta.frame_done()) {
+    const TimeAdaptivity::SubStep s = ta.next();
+    bool any = false;
+    for (int l = 0; l < num_levels(); ++l)
+      for (int b = 0; b < 2; ++b) {
+        IntegrationBlock& block = stepper_->block(2 * l + b);
+        const int k = s.levels[b];
+        block.points = k >= 0 ? &ta.kicked(k, l) : &nobody_;
+        block.dt_scale = k >= 0 ? wc.period(k) : 1.0;
+        any = any || !block.points->empty();
+      }
+    if (!any) continue;
+    drift_all(drifted, s.tick, frame_start, tick);
+    drifted = s.tick;
+    stepper_->kick_step(tick);
+    ++steps_;
+    ta.after_step(s, changes);
+  }
+  drift_all(drifted, wc.ticks_per_frame(), frame_start, tick);
+  in_sub_step_ = false;
+  ta.release_fields();
+}
+
+// Every active particle moves on from tick `from` to tick `to` with its current velocity; the
+// ghosts and the loads follow (what the stepper's sync does after its drifts).
+void HierarchicalSimulation::drift_all(int from, int to, double frame_start, double tick) {
+  if (to == from) return;
+  const double dt = (to - from) * tick;
+  for (int l = 0; l < num_levels(); ++l) drift(states_[l], IndexSet::of(lists_->active(l)), dt);
+  clock_ = frame_start + to * tick;
+  after_positions();
 }
 
 void HierarchicalSimulation::advance(int steps) {
@@ -80,6 +172,7 @@ void HierarchicalSimulation::advance(int steps) {
     clock_ = time_ + dt_;
     stepper_->step(dt_);
     time_ = clock_;
+    ++steps_;
   }
 }
 
@@ -166,7 +259,10 @@ void HierarchicalSimulation::transfer_forces() {
       ghosts_on_support_ += states_[l].f[p];
       states_[l].f[p].setZero();
     }
-  transfer_ghost_forces(*hierarchy_, *lists_, level_forces_);
+  if (in_sub_step_)
+    transfer_ghost_forces(*hierarchy_, time_levels_->ghosts(), level_forces_);
+  else
+    transfer_ghost_forces(*hierarchy_, *lists_, level_forces_);
 }
 
 // O(fixed points), once per topology change.
@@ -231,7 +327,8 @@ void HierarchicalSimulation::apply_changes() {
     resolve_loads();
     update_loads(time_);
   }
-  stepper_->start();
+  if (time_levels_) time_levels_->refile();
+  restart_integrator();
 }
 
 void HierarchicalSimulation::fill_inactive() { interpolate_inactive(*hierarchy_, fields_); }

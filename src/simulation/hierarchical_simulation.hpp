@@ -5,6 +5,7 @@
 // is exactly the single-level model.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "hierarchy/coupling_kind.hpp"
@@ -13,6 +14,7 @@
 #include "physics/level_model.hpp"
 #include "simulation/level_force_field.hpp"
 #include "simulation/surface_load.hpp"
+#include "simulation/time_adaptivity.hpp"
 #include "time/stepper.hpp"
 
 namespace mrsim {
@@ -27,6 +29,10 @@ struct HierarchySetup {
   Vec3 initial_velocity = Vec3::Zero();          // m/s, every free point of every level
   Vec3 initial_angular_velocity = Vec3::Zero();  // rad/s about level 0's centre of mass
   std::vector<SurfaceLoad> loads;                // surface loads, nodal forces per level
+  int steps_per_frame = 1;                       // steps of dt per advance_frame()
+  // Per-particle time levels (method.md §5.2, §5.4): each particle steps frame_dt / 2^k and
+  // advance_frame() runs the W-cycle; dt and steps_per_frame are then unused.
+  std::optional<TimeLevelRules> time_levels;
 };
 
 class HierarchicalSimulation {
@@ -39,11 +45,20 @@ class HierarchicalSimulation {
   PointState& state(int l) { return states_[l]; }
   const Hierarchy& hierarchy() const { return *hierarchy_; }
   const StatusLists& lists() const { return *lists_; }
-  std::int64_t force_evaluations(int l) const { return stepper_->force_evaluations(l); }
+  std::int64_t force_evaluations(int l) const {
+    return stepper_->force_evaluations(time_levels_ ? 2 * l : l);
+  }
 
   void advance(int steps);
-  /// Simulated time (s) since the start: steps taken × dt.
+  /// One display frame: steps_per_frame steps of dt, or the W-cycle with time levels. Time-
+  /// level changes (refinements during the frame, coarsenings at its end) go to `changes`.
+  void advance_frame(std::vector<TimeLevelChange>* changes = nullptr);
+  /// Simulated time (s) since the start.
   double time() const { return time_; }
+  /// Integration steps taken (with time levels: W-cycle sub-steps that integrated something).
+  std::int64_t steps() const { return steps_; }
+  /// The per-particle time levels, nullptr when the setup has none.
+  const TimeAdaptivity* time_levels() const { return time_levels_.get(); }
 
   /// Topology changes, applied between steps. After any of them call apply_changes().
   void split(int level, int point);
@@ -73,6 +88,9 @@ class HierarchicalSimulation {
   void after_positions();
   void transfer_forces();
   void refile_fixed_ghosts();
+  void restart_integrator();
+  void run_w_cycle(std::vector<TimeLevelChange>& changes);
+  void drift_all(int from, int to, double frame_start, double tick);
 
   std::vector<std::unique_ptr<LevelModel>> models_;
   std::vector<PointState> states_;
@@ -81,6 +99,13 @@ class HierarchicalSimulation {
   std::vector<std::unique_ptr<LevelForceField>> forces_;
   std::vector<std::unique_ptr<SemiImplicitFilter>> filters_;  // per level, semi-implicit only
   std::unique_ptr<Stepper> stepper_;
+  std::unique_ptr<TimeAdaptivity> time_levels_;
+  std::vector<TimeLevelChange> changes_scratch_;
+  const std::vector<int> nobody_;  // an empty point list for idle blocks
+  bool in_sub_step_ = false;       // forces are evaluated for one sub-step's particles only
+  int steps_per_frame_ = 1;
+  std::int64_t frames_ = 0, steps_ = 0;
+  double frame_dt_ = 0;
   std::vector<LevelFields> fields_;
   std::vector<Vec3*> level_forces_;  // f of every level, for the ghost force transfer
   std::vector<std::pair<int, int>> woken_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/parallel.hpp"
+#include "core/sorted_merge.hpp"
 #include "hierarchy/tet_shares.hpp"
 
 namespace mrsim {
@@ -54,14 +55,41 @@ void LevelForceField::refresh_coupling() {
 }
 
 IndexSet LevelForceField::points() const {
+  if (subset_) return IndexSet::of(subset_->served);
   return points_ ? IndexSet::of(*points_) : IndexSet::all(model_.num_points());
+}
+
+void LevelForceField::subset_for(const std::vector<int>& served, const std::vector<int>& ghosts,
+                                 FieldSubset& out) {
+  out.served = served;
+  out.gathered.clear();
+  out.tets.clear();
+  if (weighted_) {
+    std::merge(served.begin(), served.end(), ghosts.begin(), ghosts.end(),
+               std::back_inserter(out.gathered));
+    live_tets(model_, IndexSet::of(out.gathered), tet_mark_, out.tets);
+    std::erase_if(out.tets, [&](int t) { return share_[t] == 0; });
+  } else if (model_.law.strain == StrainMeasure::GreenLagrange) {
+    live_tets(model_, IndexSet::of(served), tet_mark_, out.tets);
+  }
+}
+
+void merge_subsets(const FieldSubset& a, const FieldSubset& b, FieldSubset& out) {
+  merge_sorted(a.served, b.served, out.served);
+  merge_sorted(a.gathered, b.gathered, out.gathered);
+  merge_sorted(a.tets, b.tets, out.tets);
 }
 
 std::int64_t LevelForceField::evaluate(const Vec3* u, const Vec3* v, Vec3* f) {
   const IndexSet pts = points();
-  const IndexSet tets = points_ ? IndexSet::of(tets_) : IndexSet::all(model_.num_tets());
+  IndexSet tets = points_ ? IndexSet::of(tets_) : IndexSet::all(model_.num_tets());
+  IndexSet gathered = IndexSet::of(gathered_);
+  if (subset_) {
+    tets = IndexSet::of(subset_->tets);
+    gathered = IndexSet::of(subset_->gathered);
+  }
   if (weighted_)
-    weighted_internal_forces(model_, IndexSet::of(gathered_), tets, share_.data(), u, v, f, ws_);
+    weighted_internal_forces(model_, gathered, tets, share_.data(), u, v, f, ws_);
   else
     internal_forces(model_, pts, tets, u, v, f, ws_);
   const int n = pts.count;

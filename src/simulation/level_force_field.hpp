@@ -10,6 +10,17 @@
 
 namespace mrsim {
 
+/// What one sub-step evaluates on a level when particles have their own time levels
+/// (method.md §5.4): the integrated points (`served`: gravity and loads are added there), the
+/// points whose force is gathered (served + the ghosts whose force reaches them, energy
+/// coupling) and the tets those need. All sorted.
+struct FieldSubset {
+  std::vector<int> served, gathered, tets;
+};
+
+/// out = a ∪ b, list by list (sorted, no duplicate). No allocation once out has grown.
+void merge_subsets(const FieldSubset& a, const FieldSubset& b, FieldSubset& out);
+
 class LevelForceField final : public ForceField {
  public:
   LevelForceField(const LevelModel& model, const Vec3& gravity);
@@ -23,6 +34,13 @@ class LevelForceField final : public ForceField {
   /// array is read at every evaluation. nullptr: none.
   void set_external(const Vec3* external) { external_ = external; }
   std::int64_t evaluate(const Vec3* u, const Vec3* v, Vec3* f) override;
+
+  /// Fills `out` for these integrated points (a subset of the served ones) and the ghosts of
+  /// this level whose force reaches them (sorted). O(their incident tets).
+  void subset_for(const std::vector<int>& served, const std::vector<int>& ghosts,
+                  FieldSubset& out);
+  /// Evaluate only `subset` from now on (nullptr: every served point, the default).
+  void use(const FieldSubset* subset) { subset_ = subset; }
 
  private:
   IndexSet points() const;
@@ -41,6 +59,7 @@ class LevelForceField final : public ForceField {
   bool weighted_ = false;
   std::vector<int> gathered_;             // active ∪ ghosts, sorted
   std::vector<double> share_;             // per tet, 0 outside tets_
+  const FieldSubset* subset_ = nullptr;
 };
 
 }  // namespace mrsim

@@ -1,6 +1,7 @@
 #include "simulation/level_setup_from_scenario.hpp"
 
 #include <algorithm>
+#include <bit>
 
 #include "simulation/fixed_points.hpp"
 #include "simulation/surface_load_distribution.hpp"
@@ -25,6 +26,16 @@ HierarchySetup hierarchy_setup(const Scenario& sc, const std::vector<const TetMe
   s.integrator = sc.time.integrator;
   s.coupling = sc.space.coupling;
   s.dt = sc.time.frame_dt / sc.time.substeps;
+  s.steps_per_frame = sc.time.substeps;
+  if (sc.time_levels.enabled) {
+    TimeLevelRules rules;
+    rules.frame_dt = sc.time.frame_dt;
+    rules.max_level = std::countr_zero(static_cast<unsigned>(sc.time.substeps));
+    rules.courant = sc.time.courant;
+    rules.velocity_change = sc.time_levels.velocity_change;
+    rules.semi_implicit = is_semi_implicit(sc.time.integrator);
+    s.time_levels = rules;
+  }
   s.fixed = select_fixed_points(meshes, sc.fixed);
   s.initial_velocity = sc.initial.velocity;
   s.initial_angular_velocity = sc.initial.angular_velocity;

@@ -48,6 +48,14 @@ std::vector<TetMesh> load_meshes(const Scenario& sc) {
   return meshes;
 }
 
+// The step of each column of /frames/time_levels (docs/output.md).
+std::vector<double> time_level_steps(const Scenario& sc) {
+  if (!sc.time_levels.enabled) return {sc.time.frame_dt / sc.time.substeps};
+  std::vector<double> steps;
+  for (int n = 1; n <= sc.time.substeps; n *= 2) steps.push_back(sc.time.frame_dt / n);
+  return steps;
+}
+
 std::vector<const TetMesh*> pointers(const std::vector<TetMesh>& meshes) {
   std::vector<const TetMesh*> p;
   for (const TetMesh& m : meshes) p.push_back(&m);
@@ -83,7 +91,8 @@ class FrameWriter {
     }
     std::filesystem::create_directories(sc.output.dir);
     write_text(sc.output.dir / "scenario.yaml", resolved_yaml(sc));
-    Hdf5LogHeader header{kVersion, kGitRevision, resolved_yaml(sc), utc_now_iso8601(), meshes};
+    Hdf5LogHeader header{kVersion, kGitRevision, resolved_yaml(sc), utc_now_iso8601(), meshes,
+                         time_level_steps(sc)};
     log_ = std::make_unique<Hdf5Log>(sc.output.dir / "log.h5", header);
     if (sc.output.vtk) vtk_ = std::make_unique<VtkSeriesWriter>(sc.output.dir);
   }
@@ -103,6 +112,18 @@ class FrameWriter {
                                                      sim_.lists().ghost_iface(l).size()));
       rec.force_evaluations.push_back(sim_.force_evaluations(l));
       rec.status.push_back(std::span<const std::int8_t>(status_[l]));
+    }
+    if (const TimeAdaptivity* ta = sim_.time_levels()) {
+      rec.time_levels = ta->particles_per_level();
+      rec.time_level_evaluations = ta->evaluations();
+    } else {  // one step for every particle: one column
+      std::int64_t integrated = 0, evaluations = 0;
+      for (int l = 0; l < L_; ++l) {
+        for (int p : sim_.lists().active(l)) integrated += sim_.state(l).free_point[p];
+        evaluations += sim_.force_evaluations(l);
+      }
+      rec.time_levels = {integrated};
+      rec.time_level_evaluations = {evaluations};
     }
     log_->append_frame(rec);
     if (vtk_ && frame % sc_.output.every == 0) write_vtk(frame, time);
@@ -127,11 +148,20 @@ class FrameWriter {
     }
   }
 
+  // The column of /frames/time_levels each point steps with, -1 where nothing is integrated.
+  void fill_time_levels(int l) {
+    std::fill(time_level_[l].begin(), time_level_[l].end(), -1);
+    const TimeAdaptivity* ta = sim_.time_levels();
+    for (int p : sim_.lists().active(l))
+      if (sim_.state(l).free_point[p]) time_level_[l][p] = ta ? ta->level_of(l, p) : 0;
+  }
+
   void write_vtk(int frame, double time) {
     sim_.fill_inactive();  // every level shows the whole deformed object
     std::vector<LevelFrameView> views(L_);
     for (int l = 0; l < L_; ++l) {
       const PointState& s = sim_.state(l);
+      fill_time_levels(l);
       std::fill(force_[l].begin(), force_[l].end(), Vec3::Zero());
       for (int p : sim_.lists().active(l)) force_[l][p] = s.f[p];  // only active points have one
       LevelFrameView& v = views[l];
@@ -188,6 +218,10 @@ nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& si
     j["points"].push_back(sim.model(l).num_points());
     j["tets"].push_back(sim.model(l).num_tets());
   }
+  if (const TimeAdaptivity* ta = sim.time_levels()) {
+    j["time_level_evaluations"] = ta->evaluations();
+    j["final_time_levels"] = ta->particles_per_level();
+  }
   j["max_displacement"] = st.max_displacement;
   j["peak_tool_force"] = nullptr;  // no tool before issue 6
   j["final_kinetic_energy"] = st.energies.kinetic;
@@ -218,13 +252,15 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
   RunState st;
   RunSummary sum;
   std::vector<HierarchyEvent> events;
+  std::vector<TimeLevelChange> changes;
   adapt.evaluate(sim);
   st.energies = hierarchy_energies(sim);
   writer.write(0, 0.0, 0.0, st.energies);
   for (int frame = 1; frame <= frames; ++frame) {
     const auto tf = Clock::now();
-    sim.advance(sc.time.substeps);
-    sum.steps += sc.time.substeps;
+    changes.clear();
+    sim.advance_frame(&changes);
+    sum.steps = sim.steps();
     const double time = frame * sc.time.frame_dt;
     st.energies = hierarchy_energies(sim);
     if (auto why = guard.check(sim, st.energies.elastic + st.energies.internal_kinetic)) {
@@ -239,6 +275,8 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
       write_json_file(sc.output.dir / "summary.json", summary_json(sc, sim, st, sum));
       throw RunError(st.message);
     }
+    for (const TimeLevelChange& c : changes)
+      writer.event({frame, c.to > c.from ? "time_refine" : "time_coarsen", c.level, c.point});
     // Split/merge at the frame boundary (method.md §3.3): the frame written shows the new state.
     events.clear();
     adapt.update(sim, frame, events);

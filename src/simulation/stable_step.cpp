@@ -52,11 +52,15 @@ Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMes
   }
   int substeps = 1;
   while (sc.time.frame_dt / substeps > stable.dt && substeps < (1 << 30)) substeps *= 2;
+  // Time levels: two finer levels than Courant needs, for the velocity-change rule (§5.2).
+  const bool time_levels = sc.time_levels.enabled;
+  if (time_levels) substeps = std::min(substeps * 4, 1 << 30);
   Scenario out = sc;
   out.time.substeps = substeps;
   out.resolved["time"]["substeps"] = substeps;
   os << "time.substeps computed: " << substeps << " (step " << sc.time.frame_dt / substeps
-     << " s; stable estimate " << stable.dt << " s, set by level " << stable.level << ")";
+     << " s; stable estimate " << stable.dt << " s, set by level " << stable.level
+     << (time_levels ? "; x4 for the finer time levels" : "") << ")";
   info(os.str());
   return out;
 }

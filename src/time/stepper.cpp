@@ -29,9 +29,10 @@ Stepper::Stepper(Integrator kind, std::vector<IntegrationBlock> blocks, std::fun
   momentum_parts_.reserve(blocks_.size());
 }
 
-void Stepper::semi_implicit_step(double dt) {
+void Stepper::kick_step(double dt) {
   evaluate_all();
   for (auto& b : blocks_) kick(*b.state, points(b), dt * b.dt_scale);
+  if (!is_semi_implicit(kind_)) return;
   MomentumSums before;
   if (restore_momentum_) {
     // Point lists change with splits and merges: their views are taken anew (no allocation,
@@ -42,8 +43,6 @@ void Stepper::semi_implicit_step(double dt) {
   }
   for (auto& b : blocks_) b.filter->apply(*b.state, points(b), dt * b.dt_scale);
   if (restore_momentum_) restore_momentum(momentum_parts_, before, momentum_states_);
-  for (auto& b : blocks_) drift(*b.state, points(b), dt * b.dt_scale);
-  sync();
 }
 
 // Kick-drift-kick: the force at the end of a point's step is the one of its next first
@@ -88,19 +87,14 @@ void Stepper::start() {
 void Stepper::step(double dt) {
   switch (kind_) {
     case Integrator::ModifiedEuler:
-      evaluate_all();
-      for (auto& b : blocks_) {
-        kick(*b.state, points(b), dt * b.dt_scale);
-        drift(*b.state, points(b), dt * b.dt_scale);
-      }
+    case Integrator::SemiImplicit:
+    case Integrator::SemiImplicitMomentum:
+      kick_step(dt);
+      for (auto& b : blocks_) drift(*b.state, points(b), dt * b.dt_scale);
       sync();
       break;
     case Integrator::StoermerVerlet:
       stoermer_verlet_step(dt);
-      break;
-    case Integrator::SemiImplicit:
-    case Integrator::SemiImplicitMomentum:
-      semi_implicit_step(dt);
       break;
   }
 }

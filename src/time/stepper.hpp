@@ -39,6 +39,11 @@ class Stepper {
   /// after the point sets changed (a split or merge) for the same reason.
   void start();
   void step(double dt);
+  /// The first half of a modified-Euler / semi-implicit step: every force evaluated, every
+  /// block's points kicked (v += f dt × dt_scale / m, then the semi-implicit filter and the
+  /// momentum restoration). Positions do not move. The multirate scheme of time levels drifts
+  /// positions itself (method.md §5.4, time/w_cycle.hpp).
+  void kick_step(double dt);
   std::int64_t force_evaluations(int block) const { return evaluations_[block]; }
   Integrator kind() const { return kind_; }
   /// The blocks, whose point lists and dt_scale may be changed between steps.
@@ -51,7 +56,6 @@ class Stepper {
   IndexSet points(const IntegrationBlock& b) const;
   void evaluate_all();
   void sync() { if (sync_) sync_(); }
-  void semi_implicit_step(double dt);
   void stoermer_verlet_step(double dt);
 
   Integrator kind_;

@@ -38,6 +38,7 @@ struct LogFixture {
     h.scenario_yaml = kScenario;
     h.start_time = "2026-01-02T03:04:05Z";
     for (const auto& level : first) h.levels.push_back(&level.mesh);
+    h.time_level_steps = {0.04, 0.02, 0.01};
     return h;
   }
 };
@@ -53,6 +54,8 @@ FrameRecord sample_record(int f, const std::vector<test::SampleLevel>& levels) {
   r.active = {8 - f, 12 + f};
   r.ghosts = {f, 2 * f};
   r.force_evaluations = {1000LL * f, (1LL << 40) + f};
+  r.time_levels = {3 + f, 0, 7 * f};
+  r.time_level_evaluations = {11LL * f, (1LL << 41) + f, 0};
   for (const auto& level : levels) r.status.emplace_back(level.status);
   return r;
 }
@@ -77,6 +80,12 @@ void expect_frames(hid_t file, int frames) {
   ASSERT_EQ(active.dims, (std::vector<hsize_t>{n, 2}));
   ASSERT_EQ(ghosts.dims, (std::vector<hsize_t>{n, 2}));
   ASSERT_EQ(evaluations.dims, (std::vector<hsize_t>{n, 2}));
+  const auto time_levels = read_array<std::int64_t>(file, "/frames/time_levels");
+  const auto time_level_evaluations = read_array<std::int64_t>(file, "/frames/time_level_evaluations");
+  const auto steps = read_array<double>(file, "/frames/time_level_step");
+  ASSERT_EQ(time_levels.dims, (std::vector<hsize_t>{n, 3}));
+  ASSERT_EQ(time_level_evaluations.dims, (std::vector<hsize_t>{n, 3}));
+  EXPECT_EQ(steps.values, (std::vector<double>{0.04, 0.02, 0.01}));
   for (int f = 0; f < frames; ++f) {
     const auto levels = test::sample_frame(f);
     const FrameRecord r = sample_record(f, levels);
@@ -89,6 +98,10 @@ void expect_frames(hid_t file, int frames) {
       EXPECT_EQ(active.values[2 * f + k], r.active[k]);
       EXPECT_EQ(ghosts.values[2 * f + k], r.ghosts[k]);
       EXPECT_EQ(evaluations.values[2 * f + k], r.force_evaluations[k]);
+    }
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(time_levels.values[3 * f + k], r.time_levels[k]);
+      EXPECT_EQ(time_level_evaluations.values[3 * f + k], r.time_level_evaluations[k]);
     }
     for (int k = 0; k < 2; ++k) {
       const std::string path = "/levels/level_" + std::to_string(k) + "/status";
@@ -280,6 +293,9 @@ TEST(Hdf5Log, RejectsRecordsOfTheWrongShape) {
   }
   r = sample_record(0, levels);
   r.active.pop_back();
+  EXPECT_THROW(log.append_frame(r), std::invalid_argument);
+  r = sample_record(0, levels);
+  r.time_levels.pop_back();
   EXPECT_THROW(log.append_frame(r), std::invalid_argument);
 }
 
