@@ -89,6 +89,13 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
     }
     time_levels_ = std::make_unique<TimeAdaptivity>(*hierarchy_, *lists_, models, fields, states_,
                                                     *setup.time_levels);
+    std::vector<IntegrationBlock> body(L);
+    for (int l = 0; l < L; ++l) {
+      body[l].state = &states_[l];
+      body[l].points = &lists_->active(l);
+      body[l].rest = meshes[l]->points.data();
+    }
+    stepper_->restore_momentum_over(std::move(body));
   }
   restart_integrator();
 }

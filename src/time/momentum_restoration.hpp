@@ -28,8 +28,27 @@ struct MomentumBlock {
 
 MomentumSums momentum_sums(const std::vector<MomentumBlock>& blocks);
 
+/// The rigid velocity field a + ω × (x - c) with the linear and angular momentum of `sums`
+/// (c its centre of mass): the body's rigid motion, which the filter must not brake.
+struct RigidField {
+  Vec3 a = Vec3::Zero(), omega = Vec3::Zero(), c = Vec3::Zero();
+  Vec3 at(const Vec3& x) const { return a + omega.cross(x - c); }
+};
+RigidField rigid_field(const MomentumSums& sums);
+
+/// v += sign × field(x) on the free points of `blocks`.
+void add_rigid(const std::vector<MomentumBlock>& blocks, const RigidField& field, double sign,
+               std::vector<PointState*>& states);
+
 /// Adds a + ω × (x - c) to every free point so that the momenta equal `before` again.
 void restore_momentum(const std::vector<MomentumBlock>& blocks, const MomentumSums& before,
                       std::vector<PointState*>& states);
+
+/// The same when only part of the body was filtered (time levels: the particles kicked by one
+/// sub-step): what `filtered` lost since `before` is given back as one rigid field over the
+/// whole `body` (c and the inertia are the body's), so no velocity jump appears between the
+/// filtered particles and the others.
+void restore_momentum(const std::vector<MomentumBlock>& filtered, const MomentumSums& before,
+                      const std::vector<MomentumBlock>& body, std::vector<PointState*>& states);
 
 }  // namespace mrsim

@@ -41,8 +41,28 @@ void Stepper::kick_step(double dt) {
     for (auto& b : blocks_) momentum_parts_.push_back({b.state, b.rest, points(b)});
     before = momentum_sums(momentum_parts_);
   }
+  if (!restore_momentum_ || body_.empty()) {
+    for (auto& b : blocks_) b.filter->apply(*b.state, points(b), dt * b.dt_scale);
+    if (restore_momentum_) restore_momentum(momentum_parts_, before, momentum_states_);
+    return;
+  }
+  // Part of the body (time levels): the filter sees only the kicked particles' velocity
+  // relative to the body's rigid motion, so it cannot drag them behind the others; what it
+  // still takes from their momentum goes back over the whole body.
+  body_parts_.clear();
+  for (auto& b : body_) body_parts_.push_back({b.state, b.rest, points(b)});
+  const RigidField rigid = rigid_field(momentum_sums(body_parts_));
+  add_rigid(momentum_parts_, rigid, -1.0, momentum_states_);
   for (auto& b : blocks_) b.filter->apply(*b.state, points(b), dt * b.dt_scale);
-  if (restore_momentum_) restore_momentum(momentum_parts_, before, momentum_states_);
+  add_rigid(momentum_parts_, rigid, 1.0, momentum_states_);
+  restore_momentum(momentum_parts_, before, body_parts_, body_states_);
+}
+
+void Stepper::restore_momentum_over(std::vector<IntegrationBlock> body) {
+  body_ = std::move(body);
+  body_states_.clear();
+  for (const auto& b : body_) body_states_.push_back(b.state);
+  body_parts_.reserve(body_.size());
 }
 
 // Kick-drift-kick: the force at the end of a point's step is the one of its next first

@@ -46,6 +46,10 @@ class Stepper {
   void kick_step(double dt);
   std::int64_t force_evaluations(int block) const { return evaluations_[block]; }
   Integrator kind() const { return kind_; }
+  /// semi_implicit_momentum when the blocks hold only part of the body (time levels): the
+  /// momentum the filter takes from them is given back over the whole `body` (state, points,
+  /// rest of each block).
+  void restore_momentum_over(std::vector<IntegrationBlock> body);
   /// The blocks, whose point lists and dt_scale may be changed between steps.
   IntegrationBlock& block(int k) { return blocks_[k]; }
   /// Störmer–Verlet: the current forces (s.f) of `points` become their next first half-kick
@@ -66,6 +70,9 @@ class Stepper {
   bool restore_momentum_ = false;  // SemiImplicitMomentum on a body with no fixed point
   std::vector<MomentumBlock> momentum_parts_;  // scratch, one per block
   std::vector<PointState*> momentum_states_;
+  std::vector<IntegrationBlock> body_;         // restore_momentum_over
+  std::vector<MomentumBlock> body_parts_;      // scratch
+  std::vector<PointState*> body_states_;
 };
 
 }  // namespace mrsim
