@@ -101,16 +101,17 @@ def block_arrays(vtm, block):
     return arrays
 
 
-def test_threads_bit_identical(binary, scenario, tmp, duration, frames):
+def test_threads_bit_identical(binary, scenario, tmp, duration, frames, sets=(), tag=""):
     """Same outputs, bit for bit, with 1 and 2 threads (every level's VTU block, every log.h5
     dataset but wall times), the threaded loops forced on whatever their size."""
     env = dict(os.environ, MRSIM_PARALLEL_THRESHOLD="1")
-    name = os.path.splitext(os.path.basename(scenario))[0]
+    name = os.path.splitext(os.path.basename(scenario))[0] + tag
+    extra = [a for s in sets for a in ("--set", s)]
     outs = []
     for threads in ("1", "2"):
         out = os.path.join(tmp, name + "_threads" + threads)
         r = run(binary, "run", scenario, "-o", out, "-q", "--threads", threads,
-                "--set", "time.duration=%g" % duration, env=env)
+                "--set", "time.duration=%g" % duration, *extra, env=env)
         check(r.returncode == 0, "%s with %s thread(s) succeeds" % (name, threads))
         outs.append(out)
     with h5py.File(os.path.join(outs[0], "log.h5"), "r") as a, \
