@@ -35,4 +35,21 @@ TetMesh make_box_mesh(const Vec3& min, const Vec3& max, int nx, int ny, int nz) 
   return mesh;
 }
 
+TetMesh make_graded_box_mesh(const Vec3& min, const Vec3& max, const std::vector<double>& x_widths,
+                             int ny, int nz) {
+  const int nx = static_cast<int>(x_widths.size());
+  double total = 0;
+  for (double w : x_widths) {
+    if (!(w > 0)) throw std::invalid_argument("make_graded_box_mesh: widths must be > 0");
+    total += w;
+  }
+  // Point i of a row sits at min.x + i/nx of the length in the uniform mesh: move it.
+  std::vector<double> x(nx + 1, min.x());
+  for (int i = 0; i < nx; ++i) x[i + 1] = x[i] + (max.x() - min.x()) * x_widths[i] / total;
+  x[nx] = max.x();
+  TetMesh mesh = make_box_mesh(min, max, nx, ny, nz);
+  for (size_t p = 0; p < mesh.points.size(); ++p) mesh.points[p].x() = x[p % (nx + 1)];
+  return mesh;
+}
+
 }  // namespace mrsim

@@ -22,13 +22,7 @@ using testing::kBeamL;
 TetMesh graded_beam(const std::vector<std::pair<int, int>>& runs) {
   std::vector<double> widths;
   for (auto [count, ratio] : runs) widths.insert(widths.end(), count, 1.0 / ratio);
-  const int nx = static_cast<int>(widths.size());
-  const double w = kBeamL / std::accumulate(widths.begin(), widths.end(), 0.0);
-  TetMesh m = make_box_mesh(Vec3(0, 0, 0), Vec3(1, kBeamH, kBeamH), nx, 4, 4);
-  std::vector<double> x(nx + 1, 0.0);
-  for (int i = 0; i < nx; ++i) x[i + 1] = x[i] + w * widths[i];
-  for (Vec3& p : m.points) p.x() = x[static_cast<size_t>(std::lround(p.x() * nx))];
-  return m;
+  return make_graded_box_mesh(Vec3(0, 0, 0), Vec3(kBeamL, kBeamH, kBeamH), widths, 4, 4);
 }
 
 // One slab of 8 cells 8 times thinner across the middle of the beam.
