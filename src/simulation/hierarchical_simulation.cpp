@@ -1,6 +1,7 @@
 #include "simulation/hierarchical_simulation.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <tuple>
 
 #include "hierarchy/ghost_force_transfer.hpp"
@@ -175,6 +176,8 @@ void HierarchicalSimulation::drift_all(int from, int to, double frame_start, dou
 }
 
 void HierarchicalSimulation::advance(int steps) {
+  if (time_levels_)
+    throw std::logic_error("HierarchicalSimulation::advance: with time levels use advance_frame");
   for (int s = 0; s < steps; ++s) {
     clock_ = time_ + dt_;
     stepper_->step(dt_);

@@ -49,6 +49,7 @@ class HierarchicalSimulation {
     return stepper_->force_evaluations(time_levels_ ? 2 * l : l);
   }
 
+  /// `steps` steps of dt (not with time levels: their unit is the frame).
   void advance(int steps);
   /// One display frame: steps_per_frame steps of dt, or the W-cycle with time levels. Time-
   /// level changes (refinements during the frame, coarsenings at its end) go to `changes`.
