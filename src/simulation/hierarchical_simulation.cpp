@@ -14,7 +14,8 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
                                                const HierarchySetup& setup) {
   const int L = static_cast<int>(meshes.size());
   coupling_ = setup.coupling;
-  transfer_ = coupling_ == Coupling::Energy && L > 1;  // one level: no ghost, nothing to send
+  // One level: no ghost, nothing to send.
+  transfer_ = (coupling_ == Coupling::Energy || coupling_ == Coupling::EnergyConsistent) && L > 1;
   std::vector<HierarchyLevel> levels;
   for (int l = 0; l < L; ++l) {
     models_.push_back(std::make_unique<LevelModel>(build_level_model(*meshes[l], setup.law)));
@@ -80,6 +81,8 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
                                        [this] { after_positions(); }, std::move(gathered));
   dt_ = setup.dt;
   steps_per_frame_ = setup.steps_per_frame;
+  if (transfer_ && coupling_ == Coupling::EnergyConsistent)
+    patch_ = std::make_unique<PatchTestWeights>(*hierarchy_);
   if (setup.time_levels) {
     frame_dt_ = setup.time_levels->frame_dt;
     std::vector<const LevelModel*> models;
@@ -332,6 +335,7 @@ void HierarchicalSimulation::apply_changes() {
   woken_.clear();
   refile_fixed_ghosts();
   for (auto& f : forces_) f->refresh_tets();
+  adjust_interface_weights();
   refresh_ghosts();
   if (!loads_.empty()) {
     resolve_loads();
@@ -339,6 +343,19 @@ void HierarchicalSimulation::apply_changes() {
   }
   if (time_levels_) time_levels_->refile();
   restart_integrator();
+}
+
+// Once per topology change, after the shares: the interface band's weights for the patch test.
+void HierarchicalSimulation::adjust_interface_weights() {
+  if (!patch_) return;
+  std::vector<PatchTestLevel> levels(num_levels());
+  for (int l = 0; l < num_levels(); ++l) {
+    levels[l].model = models_[l].get();
+    levels[l].free_point = &states_[l].free_point;
+    levels[l].live_tets = &forces_[l]->tets();
+    if (forces_[l]->weighted()) levels[l].weight = &forces_[l]->tet_weights();
+  }
+  patch_report_ = patch_->apply(levels);
 }
 
 void HierarchicalSimulation::fill_inactive() { interpolate_inactive(*hierarchy_, fields_); }

@@ -10,6 +10,7 @@
 
 #include "hierarchy/coupling_kind.hpp"
 #include "hierarchy/ghost_update.hpp"
+#include "hierarchy/patch_test_weights.hpp"
 #include "hierarchy/status_lists.hpp"
 #include "physics/level_model.hpp"
 #include "simulation/level_force_field.hpp"
@@ -58,6 +59,8 @@ class HierarchicalSimulation {
   double time() const { return time_; }
   /// Integration steps taken (with time levels: W-cycle sub-steps that integrated something).
   std::int64_t steps() const { return steps_; }
+  /// What the last adjustment of the interface weights achieved (energy coupling).
+  const PatchTestReport& patch_test() const { return patch_report_; }
   /// The per-particle time levels, nullptr when the setup has none.
   const TimeAdaptivity* time_levels() const { return time_levels_.get(); }
 
@@ -101,6 +104,9 @@ class HierarchicalSimulation {
   std::vector<std::unique_ptr<SemiImplicitFilter>> filters_;  // per level, semi-implicit only
   std::unique_ptr<Stepper> stepper_;
   std::unique_ptr<TimeAdaptivity> time_levels_;
+  std::unique_ptr<PatchTestWeights> patch_;
+  PatchTestReport patch_report_;
+  void adjust_interface_weights();
   std::vector<TimeLevelChange> changes_scratch_;
   const std::vector<int> nobody_;  // an empty point list for idle blocks
   bool in_sub_step_ = false;       // forces are evaluated for one sub-step's particles only

@@ -42,6 +42,13 @@ class LevelForceField final : public ForceField {
   /// Evaluate only `subset` from now on (nullptr: every served point, the default).
   void use(const FieldSubset* subset) { subset_ = subset; }
 
+  /// Coupled mode: does this level have ghosts (then its tets are weighted)? Its live tets and
+  /// their weights (active shares after refresh_tets(); hierarchy/patch_test_weights.hpp may
+  /// adjust them before the next evaluation).
+  bool weighted() const { return weighted_; }
+  const std::vector<int>& tets() const { return tets_; }
+  std::vector<double>& tet_weights() { return share_; }
+
  private:
   IndexSet points() const;
   void refresh_coupling();

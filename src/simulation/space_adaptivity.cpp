@@ -77,16 +77,34 @@ bool SpaceAdaptivity::split_within_cap(HierarchicalSimulation& sim, int l, int p
   return true;
 }
 
+// A subdivided point merges when its children are calm (criterion below coarsen_below) after
+// its dwell time, unless more than half of its neighbours stay subdivided (the island rule,
+// seen from the other side): neighbours that merge in the same pass do not count, so a calm
+// refined region merges whole instead of being held by its own interior.
 void SpaceAdaptivity::merge_calm(HierarchicalSimulation& sim, int frame,
                                  std::vector<HierarchyEvent>& events) {
+  std::vector<int> calm;
   for (int l = sim.num_levels() - 2; l >= 0; --l) {  // leaves first
-    const std::vector<int> subdivided = sim.lists().ghost_sub(l);
-    for (int p : subdivided) {
+    calm.clear();
+    for (int p : sim.lists().ghost_sub(l)) {  // sorted: so is `calm`
       if (split_frame_[l][p] >= 0 && frame - split_frame_[l][p] < s_.min_dwell_frames) continue;
-      if (!sim.hierarchy().can_merge(l, p) || surrounded(sim, l, p)) continue;
+      if (!sim.hierarchy().can_merge(l, p)) continue;
       double worst = 0;
       for (int c : sim.hierarchy().links(l).children.row(p)) worst = std::max(worst, criterion_[l + 1][c]);
-      if (worst >= s_.coarsen_below) continue;
+      if (worst < s_.coarsen_below) calm.push_back(p);
+    }
+    const PointAdjacency& adj = sim.model(l).adj;
+    std::vector<int> merging;
+    for (int p : calm) {
+      int staying = 0;
+      for (int e = adj.nbr_start[p]; e < adj.nbr_start[p + 1]; ++e) {
+        const int q = adj.nbr[e];
+        staying += sim.hierarchy().subdivided(l, q) && !std::binary_search(calm.begin(), calm.end(), q);
+      }
+      if (2 * staying <= adj.nbr_start[p + 1] - adj.nbr_start[p]) merging.push_back(p);
+    }
+    for (int p : merging) {
+      if (!sim.hierarchy().can_merge(l, p)) continue;
       sim.merge(l, p);
       events.push_back({frame, "merge", l, p});
     }
