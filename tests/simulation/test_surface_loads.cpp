@@ -77,8 +77,10 @@ struct PressResult {
 
 // Clamped at z = 0, the load ramped over 0.1 s then held (and released at `release` if > 0),
 // frames of 0.01 s, heavily damped so that it settles.
-PressResult press(const std::vector<TetMesh>& meshes, bool adaptive, double release) {
+PressResult press(const std::vector<TetMesh>& meshes, bool adaptive, double release,
+                  Coupling coupling = Coupling::Energy) {
   HierarchySetup hs;
+  hs.coupling = coupling;
   hs.law.strain = StrainMeasure::GreenLagrange;
   hs.law.lambda = 5.0e4;
   hs.law.mu = 2.0e4;
@@ -135,6 +137,16 @@ TEST(SurfaceLoads, LocalPressAdaptiveMatchesTheUniformFinestMeshAtAFractionOfIts
   EXPECT_LT(cost, 0.5);
   EXPECT_GT(adaptive.fine_active, 10u);
   EXPECT_LT(adaptive.fine_active, meshes[2].points.size() / 2);
+  // The patch-test-consistent coupling: same answer, same kind of saving.
+  const PressResult consistent = press(meshes, true, 0, Coupling::EnergyConsistent);
+  const double err_c = std::abs(consistent.patch_uz - uniform.patch_uz) / std::abs(uniform.patch_uz);
+  const double cost_c = static_cast<double>(consistent.work) / static_cast<double>(uniform.work);
+  std::printf("energy_consistent: patch uz %.4e m (%.2f %%), reaction z %.4f N, cost ratio %.3f, "
+              "finest active %zu\n", consistent.patch_uz, 100 * err_c, consistent.reaction.z(),
+              cost_c, consistent.fine_active);
+  EXPECT_LT(err_c, 0.05);
+  EXPECT_NEAR(consistent.reaction.z(), 1.0, 0.05);
+  EXPECT_LT(cost_c, 0.5);
 }
 
 TEST(SurfaceLoads, ABlockPressedLocallyRefinesThereAndCoarsensBackWhenReleased) {
