@@ -3,7 +3,6 @@
 outputs that show them (/frames/time_levels, /frames/time_level_evaluations, the VTU
 time_level array, time-level events), the computed finest step, the power-of-two rule, and
 bit-identical outputs for 1 and 2 threads with space and time adaptivity on."""
-import argparse
 import json
 import os
 import sys
@@ -90,13 +89,8 @@ def test_finest_step(binary, source, tmp):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--binary", required=True)
-    ap.add_argument("--source", required=True)
-    ap.add_argument("--shared")
-    args = ap.parse_args()
-    if not os.path.exists(args.binary):
-        print("skipped: no binary at " + args.binary)
+    args = cli.parse_args()
+    if args is None:
         return 77
     scenarios = os.path.join(args.source, "scenarios")
     with tempfile.TemporaryDirectory() as tmp:
