@@ -116,9 +116,7 @@ PatchTestReport PatchTestWeights::apply(const std::vector<PatchTestLevel>& level
       if ((*levels[l].weight)[t] == 1.0 && column_of_[l][t] < 0) add_column(levels, l, t, 1.0);
     }
   }
-  std::vector<std::pair<int, int>>& columns = columns_;
-  std::vector<double>& share = share_;
-  const int n = static_cast<int>(columns.size()), rows = static_cast<int>(rows_.size());
+  const int n = static_cast<int>(columns_.size()), rows = static_cast<int>(rows_.size());
   report.constrained = rows;
   report.band_tets = n;
   if (rows == 0 || n == 0) {
@@ -150,7 +148,7 @@ PatchTestReport PatchTestWeights::apply(const std::vector<PatchTestLevel>& level
     for (int k = 0; k < rows; ++k) x = std::max(x, r.segment<3>(3 * k).norm() / scale[k]);
     return x;
   };
-  const Eigen::VectorXd w0 = Eigen::Map<const Eigen::VectorXd>(share.data(), n);
+  const Eigen::VectorXd w0 = Eigen::Map<const Eigen::VectorXd>(share_.data(), n);
   report.residual_before = worst(w0);
   Eigen::VectorXd base = w0, d = w0, w = w0;
   const Eigen::VectorXd lo = kFloor * w0, hi = Eigen::VectorXd::Constant(n, kCeiling);
@@ -171,7 +169,7 @@ PatchTestReport PatchTestWeights::apply(const std::vector<PatchTestLevel>& level
     report.largest_ratio = std::max(report.largest_ratio, w[c] / w0[c]);
   }
   report.residual_after = worst(w);
-  for (int c = 0; c < n; ++c) (*levels[columns[c].first].weight)[columns[c].second] = w[c];
+  for (int c = 0; c < n; ++c) (*levels[columns_[c].first].weight)[columns_[c].second] = w[c];
   for (auto [l, p] : rows_) row_[l][p] = -1;
   for (auto [l, t] : columns_) column_of_[l][t] = -1;
   return report;

@@ -105,15 +105,13 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
 }
 
 // After the point sets changed: Störmer–Verlet needs the force at the current state. With time
-// levels that is one evaluation of every served point (any integrator: the outputs use it).
+// levels every integrator takes kick-drift steps (no saved half-kick force); one evaluation of
+// every served point gives the outputs their forces at the frame's time.
 void HierarchicalSimulation::restart_integrator() {
-  if (!time_levels_) {
+  if (time_levels_)
+    compute_forces();
+  else
     stepper_->start();
-    return;
-  }
-  compute_forces();
-  for (int l = 0; l < num_levels(); ++l)
-    stepper_->keep_forces(states_[l], IndexSet::of(lists_->active(l)));
 }
 
 void HierarchicalSimulation::advance_frame(std::vector<TimeLevelChange>* changes) {
@@ -128,9 +126,8 @@ void HierarchicalSimulation::advance_frame(std::vector<TimeLevelChange>* changes
   time_ = static_cast<double>(frames_) * frame_dt_;
   time_levels_->end_frame(out);
   // Every particle is at the end of the frame: one full evaluation (not counted as work)
-  // gives the outputs their forces and support reaction, and Störmer–Verlet's next half-kick
-  // a force at one common time.
-  restart_integrator();
+  // gives the outputs their forces and support reaction at one common time.
+  compute_forces();
 }
 
 // method.md §5.4 (time/w_cycle.hpp): at each tick that kicks somebody, every particle first

@@ -9,13 +9,18 @@ namespace mrsim {
 
 namespace {
 
+// More than half of p's same-level neighbours q satisfy `holds(q)`.
+template <class Pred>
+bool most_neighbours(const HierarchicalSimulation& sim, int l, int p, Pred holds) {
+  const PointAdjacency& adj = sim.model(l).adj;
+  int n = 0;
+  for (int e = adj.nbr_start[p]; e < adj.nbr_start[p + 1]; ++e) n += holds(adj.nbr[e]);
+  return 2 * n > adj.nbr_start[p + 1] - adj.nbr_start[p];
+}
+
 // More than half of p's same-level neighbours are subdivided.
 bool surrounded(const HierarchicalSimulation& sim, int l, int p) {
-  const PointAdjacency& adj = sim.model(l).adj;
-  int sub = 0;
-  for (int e = adj.nbr_start[p]; e < adj.nbr_start[p + 1]; ++e)
-    sub += sim.hierarchy().subdivided(l, adj.nbr[e]);
-  return 2 * sub > adj.nbr_start[p + 1] - adj.nbr_start[p];
+  return most_neighbours(sim, l, p, [&](int q) { return sim.hierarchy().subdivided(l, q); });
 }
 
 }  // namespace
@@ -93,16 +98,12 @@ void SpaceAdaptivity::merge_calm(HierarchicalSimulation& sim, int frame,
       for (int c : sim.hierarchy().links(l).children.row(p)) worst = std::max(worst, criterion_[l + 1][c]);
       if (worst < s_.coarsen_below) calm.push_back(p);
     }
-    const PointAdjacency& adj = sim.model(l).adj;
+    auto staying = [&](int q) {
+      return sim.hierarchy().subdivided(l, q) && !std::binary_search(calm.begin(), calm.end(), q);
+    };
     std::vector<int> merging;
-    for (int p : calm) {
-      int staying = 0;
-      for (int e = adj.nbr_start[p]; e < adj.nbr_start[p + 1]; ++e) {
-        const int q = adj.nbr[e];
-        staying += sim.hierarchy().subdivided(l, q) && !std::binary_search(calm.begin(), calm.end(), q);
-      }
-      if (2 * staying <= adj.nbr_start[p + 1] - adj.nbr_start[p]) merging.push_back(p);
-    }
+    for (int p : calm)
+      if (!most_neighbours(sim, l, p, staying)) merging.push_back(p);
     for (int p : merging) {
       if (!sim.hierarchy().can_merge(l, p)) continue;
       sim.merge(l, p);

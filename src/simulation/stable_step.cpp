@@ -7,6 +7,7 @@
 
 #include "core/log.hpp"
 #include "simulation/level_setup_from_scenario.hpp"
+#include "time/time_level_rules.hpp"
 
 namespace mrsim {
 
@@ -20,15 +21,15 @@ double shortest_edge(const TetMesh& mesh) {
 }
 
 StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes) {
-  const double c = material_law(sc.material).p_wave_speed();
-  const double factor = is_semi_implicit(sc.time.integrator) ? 2.0 : 1.0;
+  const MaterialLaw law = material_law(sc.material);
+  const bool semi_implicit = is_semi_implicit(sc.time.integrator);
   int last = 0;
   if (sc.space.enabled)
     last = sc.space.max_level >= 0 ? std::min<int>(sc.space.max_level, meshes.size() - 1)
                                    : static_cast<int>(meshes.size()) - 1;
   StableStep best{std::numeric_limits<double>::infinity(), 0};
   for (int l = 0; l <= last; ++l) {
-    const double dt = factor * sc.time.courant * shortest_edge(*meshes[l]) / c;
+    const double dt = courant_step(law, sc.time.courant, semi_implicit, shortest_edge(*meshes[l]));
     if (dt < best.dt) best = {dt, l};
   }
   return best;

@@ -21,26 +21,26 @@ MomentumSums momentum_sums(const std::vector<MomentumBlock>& blocks) {
 
 namespace {
 
+// The rigid field a + ω × (x - c) over a body of the given mass, moment and inertia (about the
+// origin) whose linear momentum is `linear` and angular momentum about the origin `angular`.
+RigidField field_of(const MomentumSums& body, const Vec3& linear, const Vec3& angular) {
+  RigidField r;
+  if (body.mass <= 0) return r;
+  r.c = body.moment / body.mass;
+  r.a = linear / body.mass;
+  // Inertia about c (parallel axis), and the angular momentum left once a is accounted for.
+  const Mat3 inertia_c =
+      body.inertia - body.mass * (r.c.squaredNorm() * Mat3::Identity() - r.c * r.c.transpose());
+  r.omega = inertia_c.ldlt().solve(angular - body.mass * r.c.cross(r.a));
+  return r;
+}
+
 // Adds to `blocks` (whose mass, moment and inertia are `body`) the rigid field that carries the
 // linear and angular momentum `lost`.
 void give_back(const MomentumSums& lost, const MomentumSums& body,
                const std::vector<MomentumBlock>& blocks, std::vector<PointState*>& states) {
   if (body.mass <= 0) return;
-  const Vec3 c = body.moment / body.mass;
-  const Vec3 a = lost.linear / body.mass;
-  // Inertia about c (parallel axis), and the angular momentum still missing once a is added.
-  const Mat3 inertia_c =
-      body.inertia - body.mass * (c.squaredNorm() * Mat3::Identity() - c * c.transpose());
-  const Vec3 missing = lost.angular - body.mass * c.cross(a);
-  const Vec3 omega = inertia_c.ldlt().solve(missing);
-  for (size_t k = 0; k < blocks.size(); ++k) {
-    const MomentumBlock& b = blocks[k];
-    PointState& s = *states[k];
-    for (int j = 0; j < b.points.count; ++j) {
-      const int i = b.points[j];
-      if (s.free_point[i]) s.v[i] += a + omega.cross(b.rest[i] + s.u[i] - c);
-    }
-  }
+  add_rigid(blocks, field_of(body, lost.linear, lost.angular), 1.0, states);
 }
 
 MomentumSums lost_since(const MomentumSums& before, const MomentumSums& after) {
@@ -53,14 +53,7 @@ MomentumSums lost_since(const MomentumSums& before, const MomentumSums& after) {
 }  // namespace
 
 RigidField rigid_field(const MomentumSums& sums) {
-  RigidField r;
-  if (sums.mass <= 0) return r;
-  r.c = sums.moment / sums.mass;
-  r.a = sums.linear / sums.mass;
-  const Mat3 inertia_c =
-      sums.inertia - sums.mass * (r.c.squaredNorm() * Mat3::Identity() - r.c * r.c.transpose());
-  r.omega = inertia_c.ldlt().solve(sums.angular - r.c.cross(sums.linear));
-  return r;
+  return field_of(sums, sums.linear, sums.angular);
 }
 
 void add_rigid(const std::vector<MomentumBlock>& blocks, const RigidField& field, double sign,

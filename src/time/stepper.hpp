@@ -52,15 +52,14 @@ class Stepper {
   void restore_momentum_over(std::vector<IntegrationBlock> body);
   /// The blocks, whose point lists and dt_scale may be changed between steps.
   IntegrationBlock& block(int k) { return blocks_[k]; }
-  /// Störmer–Verlet: the current forces (s.f) of `points` become their next first half-kick
-  /// (after a force evaluation made outside the stepper, e.g. when the point sets changed).
-  void keep_forces(PointState& s, IndexSet points) const;
 
  private:
   IndexSet points(const IntegrationBlock& b) const;
   void evaluate_all();
   void sync() { if (sync_) sync_(); }
   void stoermer_verlet_step(double dt);
+  /// Störmer–Verlet: the current forces (s.f) of `points` become their next first half-kick.
+  void keep_forces(PointState& s, IndexSet points) const;
 
   Integrator kind_;
   std::vector<IntegrationBlock> blocks_;

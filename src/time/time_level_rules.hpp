@@ -22,6 +22,12 @@ struct TimeLevelRules {
   bool semi_implicit = false;    // Courant bound doubled
 };
 
+/// The Courant bound C × h / c_p of an edge h (s), doubled for the semi-implicit step: the one
+/// stable-step estimate of the project (per particle here, per level in stable_step.hpp).
+inline double courant_step(const MaterialLaw& law, double courant, bool semi_implicit, double h) {
+  return (semi_implicit ? 2.0 : 1.0) * courant * h / law.p_wave_speed();
+}
+
 /// The coarsest level whose step meets the Courant bound at each point of the level, capped
 /// at rules.max_level (a point that cannot meet it gets max_level; the scenario check warns).
 std::vector<std::int8_t> courant_levels(const LevelModel& model, const TimeLevelRules& rules);
