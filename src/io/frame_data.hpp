@@ -1,6 +1,7 @@
 #pragma once
 // What the simulation hands to the writers for one display frame. Views only: the writers copy
 // what they need, the simulation keeps ownership. Arrays are per point of one level.
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -25,6 +26,33 @@ struct LevelFrameView {
   std::span<const double> mass;             // kg, lumped
 };
 
+/// The object's skin (the VTU `surface` block): a triangle surface moved by the levels.
+struct SurfaceFrameView {
+  std::span<const Vec3> rest;                        // m, rest positions
+  std::span<const std::array<int, 3>> triangles;     // outward-oriented
+  std::span<const Vec3> displacement;                // m
+  std::span<const Vec3> velocity;                    // m/s
+  std::span<const Vec3> contact_force;               // N, the tools' force on each vertex
+  std::span<const std::int8_t> level;                // level whose tet moves each vertex
+};
+
+/// One tool as drawn in the VTU `tool` block (all tools share the block, cell array `tool`).
+struct ToolFrameView {
+  std::span<const Vec3> points;                      // m, world frame, posed
+  std::span<const std::array<int, 3>> triangles;
+  Vec3 force = Vec3::Zero();                         // N, force the object exerts on the tool
+};
+
+/// Samples of one tool at every simulation step of a frame (log.h5 `/tool*`, docs/output.md).
+/// All spans have the same length S (possibly 0).
+struct ToolSamples {
+  std::span<const double> time;                          // s
+  std::span<const Vec3> position;                        // m
+  std::span<const std::array<double, 4>> orientation;    // unit quaternion w, x, y, z
+  std::span<const Vec3> force;                           // N, the object's force on the tool
+  std::span<const std::int32_t> contacts;                // skin vertices in contact
+};
+
 /// Per-frame scalars for `/frames/*` in log.h5. Vectors are indexed by level.
 struct FrameRecord {
   int frame = 0;
@@ -38,6 +66,7 @@ struct FrameRecord {
   std::vector<std::int64_t> force_evaluations;  // [L], cumulative point-force evaluations
   std::vector<std::int64_t> time_levels;             // [C] particles per time level
   std::vector<std::int64_t> time_level_evaluations;  // [C] cumulative, per time level
+  std::vector<Vec3> tool_force;  // [T] N, force on each tool at the frame's end (T may be 0)
   std::vector<std::span<const std::int8_t>> status;  // [L] x N_l
 };
 

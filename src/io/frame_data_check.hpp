@@ -11,10 +11,20 @@ namespace mrsim {
 /// Every array of `view` has one value per point of `view.mesh` (which must be set).
 void check_level_view(const LevelFrameView& view, int level);
 
-/// `record` has one entry per level in every per-level vector, and `status[k]` has
-/// `points_per_level[k]` values.
-/// and `time_levels` values per time-level vector.
+/// Every per-vertex array of `surface` has one value per rest position, and every triangle
+/// refers to existing vertices.
+void check_surface_view(const SurfaceFrameView& surface);
+
+/// Every triangle of tool `tool` refers to one of its points.
+void check_tool_view(const ToolFrameView& view, int tool);
+
+/// The five arrays of `samples` (of tool `tool`) have the same length.
+void check_tool_samples(const ToolSamples& samples, int tool);
+
+/// `record` has one entry per level in every per-level vector, `status[k]` has
+/// `points_per_level[k]` values, every per-time-level vector has `time_levels` values and
+/// `tool_force` has `tools` values (none without tools).
 void check_frame_record(const FrameRecord& record, std::span<const std::size_t> points_per_level,
-                        std::size_t time_levels);
+                        std::size_t time_levels, std::size_t tools);
 
 }  // namespace mrsim

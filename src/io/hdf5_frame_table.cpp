@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "io/hdf5_group.hpp"
 #include "io/hdf5_static_dataset.hpp"
@@ -39,6 +40,22 @@ ExtendibleSpec vector_spec(const char* name, const char* units, const char* desc
   return spec;
 }
 
+ExtendibleSpec tool_force_spec(std::size_t tools) {
+  ExtendibleSpec spec = scalar_spec<double>(
+      "tool_force", "N", "force the object exerts on each tool at the end of the frame");
+  spec.row_shape = {tools, 3};
+  spec.chunk_rows = chunk_rows_for(tools * 3 * sizeof(double), kScalarChunkRows);
+  return spec;
+}
+
+// Row-major [T, 3]: one contiguous row for HDF5, without relying on Eigen's array layout.
+std::vector<double> flatten(const std::vector<Vec3>& vectors) {
+  std::vector<double> values;
+  values.reserve(3 * vectors.size());
+  for (const Vec3& v : vectors) values.insert(values.end(), {v.x(), v.y(), v.z()});
+  return values;
+}
+
 template <class T>
 void append_one(ExtendibleDataset& dataset, const T& value) {
   dataset.append(std::span<const T>(&value, 1));
@@ -47,9 +64,10 @@ void append_one(ExtendibleDataset& dataset, const T& value) {
 }  // namespace
 
 FrameTable::FrameTable(hid_t file_id, std::size_t levels,
-                       const std::vector<double>& time_level_steps, const std::string& file)
+                       const std::vector<double>& time_level_steps, std::size_t tools,
+                       const std::string& file)
     : file_(file), group_(create_group(file_id, "frames", {file_, "/frames"})),
-      time_levels_count_(time_level_steps.size()) {
+      time_levels_count_(time_level_steps.size()), tools_count_(tools) {
   const hid_t g = group_.get();
   write_static_dataset(g, "time_level_step", std::span<const double>(time_level_steps),
                        {time_level_steps.size()}, "s", {file_, "/frames/time_level_step"});
@@ -81,6 +99,7 @@ FrameTable::FrameTable(hid_t file_id, std::size_t levels,
                                    "force the fixed points exert on the body, at the last force "
                                    "evaluation of the frame"),
                        file_};
+  if (tools > 0) tool_force_.emplace(g, "/frames", tool_force_spec(tools), file_);
   frame_ = {g, "/frames",
             scalar_spec<std::int32_t>("frame", "", "frame index (frame_NNNNNN.vtm)"), file_};
 }
@@ -96,6 +115,7 @@ void FrameTable::append(const FrameRecord& record) {
   time_levels_.append(std::span<const std::int64_t>(record.time_levels));
   time_level_evaluations_.append(std::span<const std::int64_t>(record.time_level_evaluations));
   support_reaction_.append(std::span<const double>(record.support_reaction.data(), 3));
+  if (tool_force_) tool_force_->append(std::span<const double>(flatten(record.tool_force)));
   append_one(frame_, static_cast<std::int32_t>(record.frame));
 }
 
@@ -105,6 +125,7 @@ void FrameTable::close() {
                                &time_level_evaluations_, &frame_}) {
     d->close();
   }
+  if (tool_force_) tool_force_->close();
   check(group_.close(), {file_, "/frames"}, "close group");
 }
 

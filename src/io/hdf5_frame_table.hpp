@@ -2,6 +2,7 @@
 // /frames in log.h5: one row per written frame (time, energies, wall time, per-level counters).
 #include <hdf5.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,10 +13,12 @@ namespace mrsim::h5 {
 
 class FrameTable {
  public:
-  /// `time_level_steps`: the step (s) of each column of /frames/time_levels.
+  /// `time_level_steps`: the step (s) of each column of /frames/time_levels. With `tools`
+  /// > 0, /frames/tool_force [F, tools, 3] exists too.
   FrameTable(hid_t file_id, std::size_t levels, const std::vector<double>& time_level_steps,
-             const std::string& file);
+             std::size_t tools, const std::string& file);
   std::size_t time_levels() const { return time_levels_count_; }
+  std::size_t tools() const { return tools_count_; }
 
   /// Appends one row to every dataset; /frames/frame goes last, so its length counts the
   /// frames whose every row was written (what a reader of a killed run should trust).
@@ -30,6 +33,8 @@ class FrameTable {
   ExtendibleDataset active_, ghosts_, force_evaluations_, support_reaction_;
   ExtendibleDataset time_levels_, time_level_evaluations_;
   std::size_t time_levels_count_ = 0;
+  std::size_t tools_count_ = 0;
+  std::optional<ExtendibleDataset> tool_force_;  // only with tools: the layout stays additive
   ExtendibleDataset frame_;
 };
 

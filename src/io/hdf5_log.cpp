@@ -13,6 +13,7 @@
 #include "io/hdf5_frame_table.hpp"
 #include "io/hdf5_group.hpp"
 #include "io/hdf5_level_group.hpp"
+#include "io/hdf5_tool_group.hpp"
 
 namespace mrsim {
 
@@ -48,6 +49,7 @@ struct Hdf5Log::Impl {
   std::vector<std::size_t> points_per_level;
   std::optional<h5::FrameTable> frames;
   std::optional<h5::EventTable> events;
+  std::vector<h5::ToolGroup> tools;
 
   Impl(const std::filesystem::path& path, const Hdf5LogHeader& header)
       : file(path.string()), file_id(create_file(file)) {
@@ -62,8 +64,14 @@ struct Hdf5Log::Impl {
     }
     if (header.time_level_steps.empty())
       throw std::invalid_argument("Hdf5Log: no time level step");
-    frames.emplace(file_id.get(), header.levels.size(), header.time_level_steps, file);
+    frames.emplace(file_id.get(), header.levels.size(), header.time_level_steps,
+                   header.tools.size(), file);
     events.emplace(file_id.get(), file);
+    tools.reserve(header.tools.size());
+    for (std::size_t k = 0; k < header.tools.size(); ++k) {
+      tools.emplace_back(file_id.get(), static_cast<int>(k), header.tools[k].name,
+                         header.tools[k].shape, file);
+    }
     flush();  // the header alone is already a valid, readable file
   }
 
@@ -73,6 +81,7 @@ struct Hdf5Log::Impl {
 
   // Children first: HDF5 keeps a file open while any object in it is open.
   void close() {
+    for (h5::ToolGroup& tool : tools) tool.close();
     events->close();
     frames->close();
     for (h5::LevelGroup& level : levels) level.close();
@@ -95,7 +104,8 @@ Hdf5Log::~Hdf5Log() {
 
 void Hdf5Log::append_frame(const FrameRecord& record) {
   if (!impl_) throw std::logic_error("Hdf5Log::append_frame after close");
-  check_frame_record(record, impl_->points_per_level, impl_->frames->time_levels());
+  check_frame_record(record, impl_->points_per_level, impl_->frames->time_levels(),
+                     impl_->frames->tools());
   for (std::size_t k = 0; k < impl_->levels.size(); ++k) {
     impl_->levels[k].append_status(record.status[k]);
   }
@@ -107,6 +117,19 @@ void Hdf5Log::append_frame(const FrameRecord& record) {
 void Hdf5Log::append_event(int frame, const std::string& kind, int level, long long point) {
   if (!impl_) throw std::logic_error("Hdf5Log::append_event after close");
   impl_->events->add(frame, kind, level, point);
+}
+
+void Hdf5Log::append_tool_samples(int tool, const ToolSamples& samples) {
+  if (!impl_) throw std::logic_error("Hdf5Log::append_tool_samples after close");
+  if (tool < 0 || static_cast<std::size_t>(tool) >= impl_->tools.size()) {
+    throw std::invalid_argument("Hdf5Log::append_tool_samples: no tool " + std::to_string(tool) +
+                                " (the header lists " + std::to_string(impl_->tools.size()) +
+                                ")");
+  }
+  check_tool_samples(samples, tool);
+  // No flush here: a frame's samples become durable with the frame's row, so a killed run
+  // holds the samples of every complete frame at the cost of one flush per frame only.
+  impl_->tools[static_cast<std::size_t>(tool)].append(samples);
 }
 
 void Hdf5Log::close() {

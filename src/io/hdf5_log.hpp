@@ -10,6 +10,12 @@
 
 namespace mrsim {
 
+/// One tool as named in the scenario, stored as the attributes of its group in log.h5.
+struct ToolLogInfo {
+  std::string name;   // scenario `tools[].name`
+  std::string shape;  // sphere, capsule, flat_cylinder, ...
+};
+
 struct Hdf5LogHeader {
   std::string version;        // mrsim version
   std::string git_revision;
@@ -19,6 +25,10 @@ struct Hdf5LogHeader {
   // Step (s) of each column of /frames/time_levels: frame_dt / 2^k with time levels, else the
   // one step frame_dt / substeps. Stored as /frames/time_level_step. At least one.
   std::vector<double> time_level_steps;
+  // One entry per tool, in the simulation's tool order: tool 0 is logged under /tool, tool k
+  // under /tool_k, and every FrameRecord then carries one tool_force per tool. Empty: no tool
+  // objects at all. (Defaulted so that brace-initialised headers need not list it.)
+  std::vector<ToolLogInfo> tools = {};
 };
 
 class Hdf5Log {
@@ -32,6 +42,11 @@ class Hdf5Log {
   void append_frame(const FrameRecord& record);
   /// Appends an event (split / merge / gc / time-level change / diagnostics) to /events.
   void append_event(int frame, const std::string& kind, int level, long long point);
+  /// Appends the samples of tool `tool` (an index into Hdf5LogHeader::tools) to its group.
+  /// Empty samples append nothing; spans of different lengths or a tool index out of range
+  /// throw std::invalid_argument. Written at once, made durable by the next append_frame's
+  /// flush.
+  void append_tool_samples(int tool, const ToolSamples& samples);
   void close();
 
  private:

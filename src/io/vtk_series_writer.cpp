@@ -17,6 +17,7 @@
 #include "io/pvd_file.hpp"
 #include "io/vtk_error_capture.hpp"
 #include "io/vtk_level_grid.hpp"
+#include "io/vtk_surface_blocks.hpp"
 
 namespace mrsim {
 namespace {
@@ -31,16 +32,34 @@ std::filesystem::path frame_file(int frame_index) {
   return std::filesystem::path(kFramesDir) / name.data();
 }
 
+// Everything the frame holds, checked before any file is written: a refused frame leaves
+// neither a .vtm nor a .pvd entry behind.
+void check_frame(std::span<const LevelFrameView> levels, const SurfaceFrameView* surface,
+                 std::span<const ToolFrameView> tools) {
+  if (levels.empty()) throw std::invalid_argument("write_frame: no level to write");
+  for (std::size_t k = 0; k < levels.size(); ++k) check_level_view(levels[k], static_cast<int>(k));
+  if (surface != nullptr) check_surface_view(*surface);
+  for (std::size_t k = 0; k < tools.size(); ++k) check_tool_view(tools[k], static_cast<int>(k));
+}
+
+void append_block(vtkMultiBlockDataSet* blocks, vtkDataObject* block, const std::string& name) {
+  const unsigned index = blocks->GetNumberOfBlocks();
+  blocks->SetBlock(index, block);
+  blocks->GetMetaData(index)->Set(vtkCompositeDataSet::NAME(), name.c_str());
+}
+
+// Levels first, then surface and tool: readers look blocks up by name, and the level blocks
+// keep the positions they had before the other two existed.
 vtkSmartPointer<vtkMultiBlockDataSet> frame_blocks(std::span<const LevelFrameView> levels,
+                                                   const SurfaceFrameView* surface,
+                                                   std::span<const ToolFrameView> tools,
                                                    double time) {
   auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
-  blocks->SetNumberOfBlocks(static_cast<unsigned>(levels.size()));
   for (std::size_t k = 0; k < levels.size(); ++k) {
-    const auto block = static_cast<unsigned>(k);
-    blocks->SetBlock(block, make_level_grid(levels[k], time));
-    blocks->GetMetaData(block)->Set(vtkCompositeDataSet::NAME(),
-                                    ("level_" + std::to_string(k)).c_str());
+    append_block(blocks, make_level_grid(levels[k], time), "level_" + std::to_string(k));
   }
+  if (surface != nullptr) append_block(blocks, make_surface_block(*surface, time), "surface");
+  if (!tools.empty()) append_block(blocks, make_tool_block(tools, time), "tool");
   return blocks;
 }
 
@@ -77,11 +96,12 @@ VtkSeriesWriter::VtkSeriesWriter(std::filesystem::path out_dir) : out_dir_(std::
 }
 
 void VtkSeriesWriter::write_frame(int frame_index, double time,
-                                  std::span<const LevelFrameView> levels) {
-  if (levels.empty()) throw std::invalid_argument("write_frame: no level to write");
-  for (std::size_t k = 0; k < levels.size(); ++k) check_level_view(levels[k], static_cast<int>(k));
+                                  std::span<const LevelFrameView> levels,
+                                  const SurfaceFrameView* surface,
+                                  std::span<const ToolFrameView> tools) {
+  check_frame(levels, surface, tools);
   const std::filesystem::path relative = frame_file(frame_index);
-  write_vtm(out_dir_ / relative, frame_blocks(levels, time));
+  write_vtm(out_dir_ / relative, frame_blocks(levels, surface, tools, time));
   // Listed only once its file is complete: the .pvd never names a half-written frame.
   entries_.push_back({frame_index, time, relative});
   write_pvd();

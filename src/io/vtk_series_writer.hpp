@@ -1,6 +1,7 @@
 #pragma once
 // ParaView time series (product.md "What a run writes"): frames/frame_NNNNNN.vtm with one
-// UnstructuredGrid block per level (binary, zlib) and frames.pvd listing every frame with its
+// UnstructuredGrid block per level (binary, zlib), optionally followed by the PolyData blocks
+// `surface` (the object's skin) and `tool`, and frames.pvd listing every frame with its
 // simulated time at full precision. The .pvd is rewritten after each frame (write to a
 // temporary file, then rename) so a run killed or failed mid-way leaves a valid series.
 #include <filesystem>
@@ -14,8 +15,12 @@ namespace mrsim {
 class VtkSeriesWriter {
  public:
   explicit VtkSeriesWriter(std::filesystem::path out_dir);
-  /// Writes one frame (all levels) and updates frames.pvd. Throws RunError on I/O failure.
-  void write_frame(int frame_index, double time, std::span<const LevelFrameView> levels);
+  /// Writes one frame (all levels, then the `surface` block when `surface` is given and the
+  /// `tool` block when `tools` is not empty) and updates frames.pvd. Throws RunError on I/O
+  /// failure, std::invalid_argument (before writing anything) on inconsistent sizes.
+  void write_frame(int frame_index, double time, std::span<const LevelFrameView> levels,
+                   const SurfaceFrameView* surface = nullptr,
+                   std::span<const ToolFrameView> tools = {});
   int frames_written() const { return static_cast<int>(entries_.size()); }
 
  private:

@@ -35,20 +35,43 @@ TetMesh make_box_mesh(const Vec3& min, const Vec3& max, int nx, int ny, int nz) 
   return mesh;
 }
 
-TetMesh make_graded_box_mesh(const Vec3& min, const Vec3& max, const std::vector<double>& x_widths,
-                             int ny, int nz) {
-  const int nx = static_cast<int>(x_widths.size());
+namespace {
+
+// Node coordinates of one axis from relative cell widths scaled to [lo, hi].
+std::vector<double> graded_nodes(double lo, double hi, const std::vector<double>& widths) {
   double total = 0;
-  for (double w : x_widths) {
+  for (double w : widths) {
     if (!(w > 0)) throw std::invalid_argument("make_graded_box_mesh: widths must be > 0");
     total += w;
   }
-  // Point i of a row sits at min.x + i/nx of the length in the uniform mesh: move it.
-  std::vector<double> x(nx + 1, min.x());
-  for (int i = 0; i < nx; ++i) x[i + 1] = x[i] + (max.x() - min.x()) * x_widths[i] / total;
-  x[nx] = max.x();
+  std::vector<double> x(widths.size() + 1, lo);
+  for (size_t i = 0; i < widths.size(); ++i) x[i + 1] = x[i] + (hi - lo) * widths[i] / total;
+  x.back() = hi;
+  return x;
+}
+
+}  // namespace
+
+TetMesh make_graded_box_mesh(const Vec3& min, const Vec3& max, const std::vector<double>& x_widths,
+                             int ny, int nz) {
+  return make_graded_box_mesh(min, max, x_widths, std::vector<double>(ny, 1.0),
+                              std::vector<double>(nz, 1.0));
+}
+
+TetMesh make_graded_box_mesh(const Vec3& min, const Vec3& max, const std::vector<double>& x_widths,
+                             const std::vector<double>& y_widths,
+                             const std::vector<double>& z_widths) {
+  const std::vector<double> x = graded_nodes(min.x(), max.x(), x_widths);
+  const std::vector<double> y = graded_nodes(min.y(), max.y(), y_widths);
+  const std::vector<double> z = graded_nodes(min.z(), max.z(), z_widths);
+  const int nx = static_cast<int>(x_widths.size()), ny = static_cast<int>(y_widths.size()),
+            nz = static_cast<int>(z_widths.size());
+  // Point i + (nx+1)(j + (ny+1)k) of the uniform mesh: move it to the graded nodes.
   TetMesh mesh = make_box_mesh(min, max, nx, ny, nz);
-  for (size_t p = 0; p < mesh.points.size(); ++p) mesh.points[p].x() = x[p % (nx + 1)];
+  for (size_t p = 0; p < mesh.points.size(); ++p) {
+    const size_t i = p % (nx + 1), j = (p / (nx + 1)) % (ny + 1), k = p / ((nx + 1) * (ny + 1));
+    mesh.points[p] = Vec3(x[i], y[j], z[k]);
+  }
   return mesh;
 }
 

@@ -14,4 +14,10 @@ TetMesh make_box_mesh(const Vec3& min, const Vec3& max, int nx, int ny, int nz);
 TetMesh make_graded_box_mesh(const Vec3& min, const Vec3& max, const std::vector<double>& x_widths,
                              int ny, int nz);
 
+/// Cells of varying width along every axis (relative widths, > 0): meshes fine under a tool
+/// and coarse away from it, for the contact validation.
+TetMesh make_graded_box_mesh(const Vec3& min, const Vec3& max, const std::vector<double>& x_widths,
+                             const std::vector<double>& y_widths,
+                             const std::vector<double>& z_widths);
+
 }  // namespace mrsim

@@ -16,6 +16,12 @@ bool has_defaults_inside(const json& referring_node) {
   return false;
 }
 
+// An object with required keys (a tool) exists only when the user writes it.
+bool optional_object(const json& referring_node) {
+  const json& node = resolve_ref(referring_node);
+  return !node.contains("required") || node["required"].empty();
+}
+
 void fill(json& value, const json& referring_node) {
   const json& node = resolve_ref(referring_node);
   if (value.is_object() && node.contains("properties")) {
@@ -24,7 +30,7 @@ void fill(json& value, const json& referring_node) {
         // `default` sits on the referring node when the type comes from a $ref.
         if (child.contains("default"))
           value[key] = child["default"];
-        else if (has_defaults_inside(child))
+        else if (has_defaults_inside(child) && optional_object(child))
           value[key] = json::object();
         else
           continue;

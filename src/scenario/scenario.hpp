@@ -2,6 +2,7 @@
 // The typed, validated scenario the simulation consumes. It is built only from a JSON document
 // that already passed schemas/scenario.schema.json with defaults injected, so every field here
 // is set. All quantities are SI; `object.units` only describes the mesh files.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -51,6 +52,30 @@ struct SurfaceLoadSpec {
   std::vector<std::pair<double, double>> profile{{0.0, 1.0}};  // (time s, factor), increasing
 };
 
+/// A tool pose of a keyframe trajectory.
+struct KeyframeSpec {
+  double t = 0;                              // s
+  Vec3 position = Vec3::Zero();              // m
+  std::array<double, 4> orientation{1, 0, 0, 0};  // w, x, y, z (tool -> world), as written
+};
+
+/// One rigid tool (scenario `tool` / `tools`; built into contact/tool.hpp by the simulation).
+struct ToolSpec {
+  std::string name;
+  std::string shape;                 // "sphere", "capsule", "flat_cylinder"
+  double radius = 0, length = 0;     // m (length: capsule segment / punch height)
+  std::vector<KeyframeSpec> keyframes;  // when csv is empty
+  std::filesystem::path csv;         // absolute; a recorded trajectory
+  bool smooth = false;               // interpolation
+  double stiffness = 0;              // Pa/m; 0 = "auto" (per skin vertex, contact/skin_contact.hpp)
+  double damping = 0;                // Pa.s/m
+};
+
+struct BudgetSpec {
+  bool realtime = false;
+  double fraction = 0.95;  // of frame_dt
+};
+
 struct InitialSpec {
   Vec3 velocity = Vec3::Zero();          // m/s, uniform
   Vec3 angular_velocity = Vec3::Zero();  // rad/s, about the centre of mass
@@ -90,14 +115,17 @@ struct Scenario {
   std::filesystem::path source;  // the YAML file it came from
   std::vector<LevelSpec> levels;
   LengthUnit units = LengthUnit::Metre;
+  std::filesystem::path skin;  // absolute; empty: the finest level's boundary
   MaterialSpec material;
   std::vector<FixedRegion> fixed;
   std::vector<SurfaceLoadSpec> loads;
+  std::vector<ToolSpec> tools;  // `tool` or `tools`
   Vec3 gravity = Vec3::Zero();
   InitialSpec initial;
   TimeSpec time;
   SpaceAdaptivitySpec space;
   TimeAdaptivitySpec time_levels;
+  BudgetSpec budget;
   OutputSpec output;
   nlohmann::json resolved;  // the validated document, every default explicit, material.derived
 };

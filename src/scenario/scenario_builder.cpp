@@ -8,8 +8,8 @@ using nlohmann::json;
 
 Vec3 vec3(const json& v) { return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()}; }
 
-std::filesystem::path mesh_path(const json& level, const std::filesystem::path& source) {
-  const std::filesystem::path written = level["mesh"].get<std::string>();
+std::filesystem::path file_path(const json& written_path, const std::filesystem::path& source) {
+  const std::filesystem::path written = written_path.get<std::string>();
   const auto folder = std::filesystem::absolute(source).parent_path();
   return (folder / written).lexically_normal();  // an absolute `written` replaces `folder`
 }
@@ -88,6 +88,44 @@ SpaceAdaptivitySpec space_spec(const json& a) {
   return spec;
 }
 
+KeyframeSpec keyframe(const json& k) {
+  KeyframeSpec spec;
+  spec.t = k["t"].get<double>();
+  spec.position = vec3(k["position"]);
+  if (k.contains("orientation"))
+    for (int i = 0; i < 4; ++i) spec.orientation[i] = k["orientation"][i].get<double>();
+  return spec;
+}
+
+ToolSpec tool_spec(const json& t, std::size_t index, const std::filesystem::path& source) {
+  ToolSpec spec;
+  spec.name = t.contains("name") ? t["name"].get<std::string>()
+                                 : index == 0 ? "tool" : "tool_" + std::to_string(index);
+  const json& shape = t["shape"];
+  spec.shape = shape.begin().key();  // the schema allows exactly one key
+  const json& size = shape.begin().value();
+  spec.radius = size["radius"].get<double>();
+  spec.length = size.contains("length") ? size["length"].get<double>() : 0.0;
+  const json& trajectory = t["trajectory"];
+  if (trajectory.is_object())
+    spec.csv = file_path(trajectory["csv"], source);
+  else
+    for (const json& k : trajectory) spec.keyframes.push_back(keyframe(k));
+  spec.smooth = t["interpolation"] == "smooth";
+  const json& stiffness = t["contact"]["stiffness"];
+  spec.stiffness = stiffness.is_number() ? stiffness.get<double>() : 0.0;  // 0: "auto"
+  spec.damping = t["contact"]["damping"].get<double>();
+  return spec;
+}
+
+// `tool` is a list of one.
+std::vector<ToolSpec> tool_specs(const json& resolved, const std::filesystem::path& source) {
+  std::vector<ToolSpec> tools;
+  if (resolved.contains("tool")) tools.push_back(tool_spec(resolved["tool"], 0, source));
+  for (const json& t : resolved["tools"]) tools.push_back(tool_spec(t, tools.size(), source));
+  return tools;
+}
+
 OutputSpec output_spec(const json& o) {
   return {o["dir"].get<std::string>(), o["every"].get<int>(), o["vtk"].get<bool>()};
 }
@@ -99,11 +137,14 @@ Scenario build_scenario(const json& resolved, const std::filesystem::path& sourc
   s.name = resolved["name"].get<std::string>();
   s.source = source;
   for (const auto& level : resolved["object"]["levels"])
-    s.levels.push_back({mesh_path(level, source)});
+    s.levels.push_back({file_path(level["mesh"], source)});
+  if (resolved["object"].contains("skin") && resolved["object"]["skin"].contains("surface"))
+    s.skin = file_path(resolved["object"]["skin"]["surface"], source);
   s.units = resolved["object"]["units"] == "mm" ? LengthUnit::Millimetre : LengthUnit::Metre;
   s.material = material(resolved["material"]);
   for (const auto& f : resolved["fixed"]) s.fixed.push_back(fixed_region(f));
   for (const auto& l : resolved["loads"]) s.loads.push_back(load_spec(l));
+  s.tools = tool_specs(resolved, source);
   s.gravity = vec3(resolved["gravity"]);
   s.initial = {vec3(resolved["initial"]["velocity"]),
                vec3(resolved["initial"]["angular_velocity"])};
@@ -111,6 +152,8 @@ Scenario build_scenario(const json& resolved, const std::filesystem::path& sourc
   s.space = space_spec(resolved["adaptivity"]["space"]);
   s.time_levels = {resolved["adaptivity"]["time"]["enabled"].get<bool>(),
                    resolved["adaptivity"]["time"]["velocity_change"].get<double>()};
+  s.budget = {resolved["adaptivity"]["budget"]["realtime"].get<bool>(),
+              resolved["adaptivity"]["budget"]["fraction"].get<double>()};
   s.output = output_spec(resolved["output"]);
   s.resolved = resolved;
   return s;

@@ -94,6 +94,41 @@ void check_adaptivity(const json& document, std::vector<Issue>& issues) {
                           "): a point would split and merge back every frame"});
 }
 
+void check_tool(const json& tool, const std::string& pointer, std::vector<Issue>& issues) {
+  const json& trajectory = tool["trajectory"];
+  if (!trajectory.is_array()) return;
+  const std::string keys = child_pointer(pointer, "trajectory");
+  for (std::size_t k = 0; k < trajectory.size(); ++k) {
+    if (k > 0 && trajectory[k]["t"].get<double>() <= trajectory[k - 1]["t"].get<double>())
+      issues.push_back({child_pointer(child_pointer(keys, k), "t"),
+                        "keyframe times must increase (" + trajectory[k]["t"].dump() + " after " +
+                            trajectory[k - 1]["t"].dump() + ")"});
+    if (trajectory[k].contains("orientation")) {
+      double norm = 0;
+      for (const json& c : trajectory[k]["orientation"]) norm += c.get<double>() * c.get<double>();
+      if (!(norm > 1e-24))
+        issues.push_back({child_pointer(child_pointer(keys, k), "orientation"),
+                          "must not be zero (a unit quaternion [w, x, y, z])"});
+    }
+  }
+}
+
+// `tool` is the short form of a list of one; tool names name groups in log.h5.
+void check_tools(const json& document, std::vector<Issue>& issues) {
+  if (document.contains("tool") && !document["tools"].empty())
+    issues.push_back({"/tools", "give either tool (one) or tools (a list), not both"});
+  if (document.contains("tool")) check_tool(document["tool"], "/tool", issues);
+  const json& tools = document["tools"];
+  for (std::size_t i = 0; i < tools.size(); ++i) {
+    check_tool(tools[i], child_pointer("/tools", i), issues);
+    for (std::size_t j = 0; j < i; ++j)
+      if (tools[i].contains("name") && tools[j].contains("name") && tools[i]["name"] == tools[j]["name"])
+        issues.push_back({child_pointer(child_pointer("/tools", i), "name"),
+                          "tool names must differ (" + tools[i]["name"].dump() + " is tools[" +
+                              std::to_string(j) + "]'s)"});
+  }
+}
+
 // The name becomes the folder out/<name>: "." and ".." would point elsewhere.
 void check_name(const json& name, std::vector<Issue>& issues) {
   if (name == "." || name == "..")
@@ -107,6 +142,7 @@ void check_semantics(const json& document, const SourceMap& positions) {
   check_name(document["name"], issues);
   check_fixed(document, issues);
   check_loads(document, issues);
+  check_tools(document, issues);
   check_time(document["time"], issues);
   check_material(document["material"], issues);
   check_adaptivity(document, issues);

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "contact/skin_binding.hpp"
+#include "hierarchy/active_row.hpp"
 #include "hierarchy/ghost_force_transfer.hpp"
 #include "simulation/diagnostics.hpp"
 #include "time/explicit_updates.hpp"
@@ -68,14 +70,22 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
     gathered = [this] { transfer_forces(); };
   loads_ = setup.loads;
   load_factors_.assign(loads_.size(), 0.0);
-  if (!loads_.empty()) {
+  if (!setup.tools.empty()) {
+    Skin skin = setup.skin ? *setup.skin : boundary_skin(*meshes.back());
+    SkinBinding binding = bind_skin(skin, meshes);
+    contact_ = std::make_unique<SkinContact>(std::move(skin), std::move(binding), setup.tools,
+                                             setup.law.lambda + 2.0 * setup.law.mu);
+  }
+  if (!loads_.empty() || contact_) {
     external_.resize(L);
     for (int l = 0; l < L; ++l) {
       external_[l].assign(models_[l]->num_points(), Vec3::Zero());
       forces_[l]->set_external(external_[l].data());
+      external_ptrs_.push_back(external_[l].data());
     }
     resolve_loads();
-    update_loads(0.0);
+    remap_skin();
+    update_external(0.0);
   }
   stepper_ = std::make_unique<Stepper>(setup.integrator, std::move(blocks),
                                        [this] { after_positions(); }, std::move(gathered));
@@ -121,6 +131,7 @@ void HierarchicalSimulation::advance_frame(std::vector<TimeLevelChange>* changes
   }
   std::vector<TimeLevelChange>& out = changes ? *changes : changes_scratch_;
   changes_scratch_.clear();
+  begin_contact_frame(frame_dt_);
   run_w_cycle(out);
   ++frames_;
   time_ = static_cast<double>(frames_) * frame_dt_;
@@ -156,6 +167,7 @@ void HierarchicalSimulation::run_w_cycle(std::vector<TimeLevelChange>& changes) 
     if (!any) continue;
     drift_all(drifted, s.tick, frame_start, tick);
     drifted = s.tick;
+    if (contact_) contact_->record_sample(clock_);
     stepper_->kick_step(tick);
     ++steps_;
     ta.after_step(s, changes);
@@ -178,39 +190,80 @@ void HierarchicalSimulation::drift_all(int from, int to, double frame_start, dou
 void HierarchicalSimulation::advance(int steps) {
   if (time_levels_)
     throw std::logic_error("HierarchicalSimulation::advance: with time levels use advance_frame");
+  begin_contact_frame(steps * dt_);
   for (int s = 0; s < steps; ++s) {
     clock_ = time_ + dt_;
     stepper_->step(dt_);
     time_ = clock_;
     ++steps_;
+    if (contact_) contact_->record_sample(time_);
+  }
+}
+
+// The broad phase over the coming frame, then the contact forces again from its candidates
+// (the first step must see every vertex that already touches a tool).
+void HierarchicalSimulation::begin_contact_frame(double duration) {
+  if (!contact_) return;
+  contact_->begin_frame(time_, time_ + duration, fields_);
+  update_external(time_);
+}
+
+void HierarchicalSimulation::remap_skin() {
+  if (!contact_) return;
+  contact_->remap(*hierarchy_, free_points());
+}
+
+std::vector<const std::vector<std::uint8_t>*> HierarchicalSimulation::free_points() const {
+  std::vector<const std::vector<std::uint8_t>*> free(num_levels());
+  for (int l = 0; l < num_levels(); ++l) free[l] = &states_[l].free_point;
+  return free;
+}
+
+void HierarchicalSimulation::contact_region(double lookahead,
+                                            std::vector<std::pair<int, int>>& out) const {
+  out.clear();
+  if (!contact_) return;
+  std::vector<int> near;
+  for (int k = 0; k < contact_->num_tools(); ++k) {
+    contact_->near_tool(k, time_, time_ + lookahead, fields_, near);
+    for (int s : near)
+      for (const ActiveTerm* t = contact_->map().begin(s); t != contact_->map().end(s); ++t)
+        if (t->level >= 0) out.emplace_back(t->level, t->point);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+Vec3 HierarchicalSimulation::external_on_body() const {
+  Vec3 sum = loads_on_support_ + contact_on_support_;
+  if (external_.empty()) return sum;
+  for (int l = 0; l < num_levels(); ++l)
+    for (int p : lists_->active(l)) sum += external_[l][p];
+  return sum;
+}
+
+void HierarchicalSimulation::skin_state(std::vector<Vec3>& u, std::vector<Vec3>& v) const {
+  const int n = contact_ ? contact_->map().size() : 0;
+  u.resize(n);
+  v.resize(n);
+  for (int s = 0; s < n; ++s) {
+    u[s] = contact_->map().value(s, fields_, false);
+    v[s] = contact_->map().value(s, fields_, true);
   }
 }
 
 // Positions (and with them the load time) moved to the end of the step under way.
 void HierarchicalSimulation::after_positions() {
   refresh_ghosts();
-  if (!loads_.empty()) update_loads(clock_);
+  if (!external_.empty()) update_external(clock_);
 }
 
 // A force on point p of level l reaches the active points that move p, with the weights that
-// move it: a subdivided ghost through its child tet, an interface ghost or an inactive point
-// through its parent tet (the transpose of the interpolations; level 0 is never inactive).
+// move it (hierarchy/active_row.hpp; level -1: held by the support).
 void HierarchicalSimulation::deposit(int load, int l, int p, const Vec3& force) {
-  const NodeState s = hierarchy_->state(l, p);
-  if (s != NodeState::Active && !states_[l].free_point[p]) {  // held by the support
-    load_targets_.push_back({load, -1, p, force});
-    return;
-  }
-  if (s == NodeState::Active) {
-    load_targets_.push_back({load, l, p, force});
-    return;
-  }
-  const bool finer = s == NodeState::GhostSub;
-  const Embedding& e = finer ? hierarchy_->links(l).child_tet : hierarchy_->links(l).parent_tet;
-  const int source = finer ? l + 1 : l - 1;
-  const Tet& t = models_[source]->mesh->tets[e.tet[p]];
-  for (int k = 0; k < 4; ++k)
-    if (e.bary[p][k] != 0) deposit(load, source, t[k], e.bary[p][k] * force);
+  std::vector<ActiveTerm> row;
+  append_active_row(*hierarchy_, free_points(), l, p, 1.0, row);
+  for (const ActiveTerm& t : row) load_targets_.push_back({load, t.level, t.point, t.weight * force});
 }
 
 // Once per topology change: where every nodal load lands, merged per (load, level, point).
@@ -235,12 +288,17 @@ void HierarchicalSimulation::resolve_loads() {
   load_targets_ = std::move(merged);
 }
 
-// O(loaded points) per step: clear the previous shares, then add each load at its factor.
-void HierarchicalSimulation::update_loads(double t) {
+// O(loaded points + contact candidates) per step: clear the previous shares of the loads and
+// the contacts (they may share points), then add each load at its factor and the contacts.
+void HierarchicalSimulation::update_external(double t) {
   loads_on_support_.setZero();
   for (size_t k = 0; k < loads_.size(); ++k) load_factors_[k] = load_factor(loads_[k].profile, t);
   for (const LoadTarget& target : load_targets_)
     if (target.level >= 0) external_[target.level][target.point].setZero();
+  if (contact_) {
+    contact_->clear(external_ptrs_);
+    contact_on_support_ = contact_->apply(t, fields_, external_ptrs_);
+  }
   for (const LoadTarget& target : load_targets_) {
     const Vec3 f = load_factors_[target.load] * target.force;
     if (target.level >= 0)
@@ -334,9 +392,10 @@ void HierarchicalSimulation::apply_changes() {
   for (auto& f : forces_) f->refresh_tets();
   adjust_interface_weights();
   refresh_ghosts();
-  if (!loads_.empty()) {
+  if (!external_.empty()) {
     resolve_loads();
-    update_loads(time_);
+    remap_skin();
+    update_external(time_);
   }
   if (time_levels_) time_levels_->refile();
   restart_integrator();

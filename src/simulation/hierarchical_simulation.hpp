@@ -6,8 +6,10 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
+#include "contact/skin_contact.hpp"
 #include "hierarchy/coupling_kind.hpp"
 #include "hierarchy/ghost_update.hpp"
 #include "hierarchy/patch_test_weights.hpp"
@@ -34,6 +36,10 @@ struct HierarchySetup {
   // Per-particle time levels (method.md §5.2, §5.4): each particle steps frame_dt / 2^k and
   // advance_frame() runs the W-cycle; dt and steps_per_frame are then unused.
   std::optional<TimeLevelRules> time_levels;
+  // Rigid tools against the skin (method.md §6.2); the skin defaults to the finest level's
+  // boundary when `skin` is empty.
+  std::vector<Tool> tools;
+  std::optional<Skin> skin;
 };
 
 class HierarchicalSimulation {
@@ -82,13 +88,35 @@ class HierarchicalSimulation {
   Coupling coupling() const { return coupling_; }
   /// Force that fixed ghosts and fixed loaded points pass to the support instead of to active
   /// points (N), at the last force evaluation / load update: part of the support reaction.
-  Vec3 held_by_support() const { return ghosts_on_support_ + loads_on_support_; }
+  Vec3 held_by_support() const {
+    return ghosts_on_support_ + loads_on_support_ + contact_on_support_;
+  }
+  /// Σ of the external forces (loads and contacts) on the active points plus the share held by
+  /// the support, at the last update (N): where the tools' reactions went.
+  Vec3 external_on_body() const;
+  /// External force (loads and contacts) on every point of level l at the last update (N);
+  /// empty without loads or tools.
+  std::span<const Vec3> external_force(int l) const {
+    return external_.empty() ? std::span<const Vec3>() : std::span<const Vec3>(external_[l]);
+  }
+  /// The tools and the skin, nullptr without tools. Samples accumulate over the frames until
+  /// the caller clears them.
+  const SkinContact* contact() const { return contact_.get(); }
+  SkinContact* contact() { return contact_.get(); }
+  /// The active points that move a skin vertex some tool may reach during the next
+  /// `lookahead` seconds, as (level, point), sorted, unique: where contact is coming.
+  void contact_region(double lookahead, std::vector<std::pair<int, int>>& out) const;
+  /// Displacement and velocity of every skin vertex (sized here).
+  void skin_state(std::vector<Vec3>& u, std::vector<Vec3>& v) const;
 
  private:
   Vec3 fresh_value(int l, int q, bool velocity) const;
   void resolve_loads();
   void deposit(int load, int l, int p, const Vec3& force);
-  void update_loads(double t);
+  void update_external(double t);
+  void begin_contact_frame(double duration);
+  void remap_skin();
+  std::vector<const std::vector<std::uint8_t>*> free_points() const;
   void after_positions();
   void transfer_forces();
   void refile_fixed_ghosts();
@@ -130,6 +158,9 @@ class HierarchicalSimulation {
   };
   std::vector<LoadTarget> load_targets_;  // rebuilt when the active sets change
   std::vector<std::vector<Vec3>> external_;  // per level, Σ factor × nodal load (N)
+  std::unique_ptr<SkinContact> contact_;
+  std::vector<Vec3*> external_ptrs_;  // external_[l].data()
+  Vec3 contact_on_support_ = Vec3::Zero();
   Coupling coupling_ = Coupling::Energy;
   bool transfer_ = false;  // energy coupling with more than one level
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 
+#include "simulation/contact_setup.hpp"
 #include "simulation/fixed_points.hpp"
 #include "simulation/surface_load_distribution.hpp"
 
@@ -41,6 +42,10 @@ HierarchySetup hierarchy_setup(const Scenario& sc, const std::vector<const TetMe
   s.initial_angular_velocity = sc.initial.angular_velocity;
   for (size_t k = 0; k < sc.loads.size(); ++k)
     s.loads.push_back(distribute_surface_load(*meshes.back(), sc.loads[k], k));
+  if (!sc.tools.empty()) {
+    s.tools = scenario_tools(sc);
+    if (!sc.skin.empty()) s.skin = scenario_skin(sc, *meshes.back());
+  }
   return s;
 }
 
@@ -52,6 +57,9 @@ SpaceAdaptivitySettings space_settings(const Scenario& sc) {
   if (sc.space.max_level >= 0) s.max_level = sc.space.max_level;
   s.max_active_points = sc.space.max_active_points;
   s.min_dwell_frames = sc.space.min_dwell_frames;
+  // One level finer per frame: look as many frames ahead as there are levels to go through.
+  if (!sc.tools.empty())
+    s.contact_lookahead = sc.time.frame_dt * static_cast<double>(sc.levels.size());
   return s;
 }
 

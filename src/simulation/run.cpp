@@ -14,6 +14,8 @@
 #include "io/vtk_series_writer.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mrsim/version.hpp"
+#include "contact/tool_surface.hpp"
+#include "simulation/contact_setup.hpp"
 #include "simulation/divergence.hpp"
 #include "simulation/hierarchy_diagnostics.hpp"
 #include "simulation/level_setup_from_scenario.hpp"
@@ -93,6 +95,11 @@ class FrameWriter {
     write_text(sc.output.dir / "scenario.yaml", resolved_yaml(sc));
     Hdf5LogHeader header{kVersion, kGitRevision, resolved_yaml(sc), utc_now_iso8601(), meshes,
                          time_level_steps(sc)};
+    if (const SkinContact* c = sim.contact())
+      for (int k = 0; k < c->num_tools(); ++k) {
+        header.tools.push_back({c->tool(k).name, shape_name(c->tool(k).shape.kind)});
+        tool_surfaces_.push_back(tool_surface(c->tool(k).shape));
+      }
     log_ = std::make_unique<Hdf5Log>(sc.output.dir / "log.h5", header);
     if (sc.output.vtk) vtk_ = std::make_unique<VtkSeriesWriter>(sc.output.dir);
   }
@@ -125,9 +132,13 @@ class FrameWriter {
       rec.time_levels = {integrated};
       rec.time_level_evaluations = {evaluations};
     }
+    write_tool_samples(rec);
     log_->append_frame(rec);
     if (vtk_ && frame % sc_.output.every == 0) write_vtk(frame, time);
   }
+
+  /// Largest force on any tool at any step so far (N).
+  double peak_tool_force() const { return peak_tool_force_; }
 
   void event(const HierarchyEvent& e) { log_->append_event(e.frame, e.kind, e.level, e.point); }
   void close() { log_->close(); }
@@ -137,6 +148,19 @@ class FrameWriter {
     std::ofstream out(file);
     out << text;
     if (!out) throw RunError("cannot write " + file.string());
+  }
+
+  // The haptic-rate samples of the frame (every step), then the buffers start again.
+  void write_tool_samples(FrameRecord& rec) {
+    SkinContact* c = sim_.contact();
+    if (!c) return;
+    for (int k = 0; k < c->num_tools(); ++k) {
+      const ToolSampleBuffer& b = c->samples(k);
+      log_->append_tool_samples(k, {b.time, b.position, b.orientation, b.force, b.contacts});
+      for (const Vec3& f : b.force) peak_tool_force_ = std::max(peak_tool_force_, f.norm());
+      rec.tool_force.push_back(c->tool_force(k));
+    }
+    c->clear_samples();
   }
 
   void fill_status(int l) {
@@ -174,6 +198,24 @@ class FrameWriter {
       v.criterion = adapt_.criterion(l);
       v.mass = sim_.model(l).mass;
     }
+    if (const SkinContact* c = sim_.contact()) {
+      sim_.skin_state(skin_u_, skin_v_);
+      skin_level_.resize(skin_u_.size());
+      for (std::size_t s = 0; s < skin_level_.size(); ++s)
+        skin_level_[s] = static_cast<std::int8_t>(c->map().level(static_cast<int>(s)));
+      const SurfaceFrameView surface{c->skin().rest, c->skin().triangles, skin_u_, skin_v_,
+                                     c->vertex_force(), skin_level_};
+      std::vector<ToolFrameView> tools;
+      tool_points_.resize(c->num_tools());
+      for (int k = 0; k < c->num_tools(); ++k) {
+        const ToolPose pose = c->tool(k).trajectory.pose(time);
+        tool_points_[k].clear();
+        for (const Vec3& p : tool_surfaces_[k].points) tool_points_[k].push_back(pose.to_world(p));
+        tools.push_back({tool_points_[k], tool_surfaces_[k].triangles, c->tool_force(k)});
+      }
+      vtk_->write_frame(frame, time, views, &surface, tools);
+      return;
+    }
     vtk_->write_frame(frame, time, views);
   }
 
@@ -186,6 +228,11 @@ class FrameWriter {
   std::vector<std::vector<std::int32_t>> time_level_;
   std::unique_ptr<Hdf5Log> log_;
   std::unique_ptr<VtkSeriesWriter> vtk_;
+  std::vector<TriangleSurface> tool_surfaces_;  // per tool, in the tool frame
+  std::vector<std::vector<Vec3>> tool_points_;  // per tool, posed (scratch)
+  std::vector<Vec3> skin_u_, skin_v_;
+  std::vector<std::int8_t> skin_level_;
+  double peak_tool_force_ = 0;
 };
 
 struct RunState {
@@ -195,10 +242,20 @@ struct RunState {
   std::string status = "completed";
   std::string message;
   std::int64_t splits = 0, merges = 0;
+  std::int64_t budget_hold = 0, budget_shed = 0;  // frames over the real-time budget
 };
 
+// method.md §6.2 point 5: the rule for the adaptivity at a frame boundary from the wall time
+// the frame's simulation took. Free unless adaptivity.budget.realtime.
+BudgetRule budget_rule(const Scenario& sc, double last_simulation_wall) {
+  if (!sc.budget.realtime) return BudgetRule::Free;
+  if (last_simulation_wall > sc.time.frame_dt) return BudgetRule::Shed;
+  if (last_simulation_wall > sc.budget.fraction * sc.time.frame_dt) return BudgetRule::HoldSplits;
+  return BudgetRule::Free;
+}
+
 nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& sim,
-                            const RunState& st, const RunSummary& sum) {
+                            const RunState& st, const RunSummary& sum, double peak_tool_force) {
   nlohmann::json j;
   j["name"] = sc.name;
   j["status"] = st.status;
@@ -211,6 +268,10 @@ nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& si
   j["wall_time"] = sum.wall_time;
   j["splits"] = st.splits;
   j["merges"] = st.merges;
+  if (sc.budget.realtime) {
+    j["budget_hold_frames"] = st.budget_hold;
+    j["budget_shed_frames"] = st.budget_shed;
+  }
   for (int l = 0; l < sim.num_levels(); ++l) {
     j["force_evaluations"].push_back(sim.force_evaluations(l));
     j["final_active"].push_back(sim.lists().active(l).size());
@@ -223,7 +284,10 @@ nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& si
     j["final_time_levels"] = ta->particles_per_level();
   }
   j["max_displacement"] = st.max_displacement;
-  j["peak_tool_force"] = nullptr;  // no tool before issue 6
+  if (sim.contact())
+    j["peak_tool_force"] = peak_tool_force;
+  else
+    j["peak_tool_force"] = nullptr;
   j["final_kinetic_energy"] = st.energies.kinetic;
   j["final_elastic_energy"] = st.energies.elastic;
   return j;
@@ -231,9 +295,11 @@ nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& si
 
 }  // namespace
 
+// Every value computed from the meshes, written back into the scenario (and `resolved`).
 Scenario check_scenario_inputs(const Scenario& sc) {
   const std::vector<TetMesh> meshes = load_meshes(sc);
-  hierarchy_setup(sc, pointers(meshes));  // fixed regions and loads select something
+  // Fixed regions and loads select something; tool trajectories and the skin read.
+  hierarchy_setup(sc, pointers(meshes));
   return with_stable_substeps(sc, pointers(meshes));
 }
 
@@ -260,6 +326,8 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
     const auto tf = Clock::now();
     changes.clear();
     sim.advance_frame(&changes);
+    // The frame just simulated decides whether the hierarchy may grow at its boundary.
+    const BudgetRule budget = budget_rule(sc, seconds_since(tf));
     sum.steps = sim.steps();
     const double time = frame * sc.time.frame_dt;
     st.energies = hierarchy_energies(sim);
@@ -272,14 +340,18 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
       writer.close();
       sum.frames = st.frames_done;
       sum.wall_time = seconds_since(t0);
-      write_json_file(sc.output.dir / "summary.json", summary_json(sc, sim, st, sum));
+      write_json_file(sc.output.dir / "summary.json", summary_json(sc, sim, st, sum, writer.peak_tool_force()));
       throw RunError(st.message);
     }
     for (const TimeLevelChange& c : changes)
       writer.event({frame, c.to > c.from ? "time_refine" : "time_coarsen", c.level, c.point});
     // Split/merge at the frame boundary (method.md §3.3): the frame written shows the new state.
     events.clear();
-    adapt.update(sim, frame, events);
+    if (budget != BudgetRule::Free) {
+      writer.event({frame, budget == BudgetRule::Shed ? "budget_shed" : "budget_hold", -1, -1});
+      ++(budget == BudgetRule::Shed ? st.budget_shed : st.budget_hold);
+    }
+    adapt.update(sim, frame, events, budget);
     for (const HierarchyEvent& e : events) {
       st.splits += e.kind == "split";
       st.merges += e.kind == "merge";
@@ -293,7 +365,7 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
   writer.close();
   sum.frames = st.frames_done;
   sum.wall_time = seconds_since(t0);
-  write_json_file(sc.output.dir / "summary.json", summary_json(sc, sim, st, sum));
+  write_json_file(sc.output.dir / "summary.json", summary_json(sc, sim, st, sum, writer.peak_tool_force()));
   return sum;
 }
 

@@ -1,6 +1,7 @@
 #include "simulation/space_adaptivity.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <tuple>
 
 #include "physics/laplacian_criterion.hpp"
@@ -27,12 +28,31 @@ bool surrounded(const HierarchicalSimulation& sim, int l, int p) {
 
 SpaceAdaptivity::SpaceAdaptivity(const SpaceAdaptivitySettings& settings,
                                  const HierarchicalSimulation& sim)
-    : s_(settings), criterion_(sim.num_levels()), split_frame_(sim.num_levels()) {
+    : s_(settings),
+      criterion_(sim.num_levels()),
+      split_frame_(sim.num_levels()),
+      contact_(sim.num_levels()) {
   s_.max_level = std::min(s_.max_level, sim.num_levels() - 1);
   for (int l = 0; l < sim.num_levels(); ++l) {
     criterion_[l].assign(sim.model(l).num_points(), 0.0);
     split_frame_[l].assign(sim.model(l).num_points(), -1);
+    contact_[l].assign(sim.model(l).num_points(), 0);
   }
+}
+
+void SpaceAdaptivity::mark_contact_region(const HierarchicalSimulation& sim) {
+  for (const auto& [l, p] : region_) contact_[l][p] = 0;
+  region_.clear();
+  if (s_.contact_lookahead <= 0) return;
+  sim.contact_region(s_.contact_lookahead, region_);
+  for (const auto& [l, p] : region_) contact_[l][p] = 1;
+}
+
+// A subdivided point stays subdivided while a point it activated moves skin near a tool.
+bool SpaceAdaptivity::holds_contact(const HierarchicalSimulation& sim, int l, int p) const {
+  for (int q : sim.hierarchy().links(l).active_set.row(p))
+    if (contact_[l + 1][q]) return true;
+  return false;
 }
 
 void SpaceAdaptivity::evaluate(const HierarchicalSimulation& sim) {
@@ -46,11 +66,16 @@ void SpaceAdaptivity::evaluate(const HierarchicalSimulation& sim) {
 
 void SpaceAdaptivity::split_worst(HierarchicalSimulation& sim, int frame,
                                   std::vector<HierarchyEvent>& events) {
-  std::vector<std::tuple<double, int, int>> worst;  // (-c, level, point): worst first, stable
+  // (-c, level, point): points near a tool first, then the worst criterion; stable.
+  std::vector<std::tuple<double, int, int>> worst;
   for (int l = 0; l < s_.max_level; ++l)
-    for (int p : sim.lists().active(l))
-      if (criterion_[l][p] > s_.refine_above && sim.hierarchy().can_split(l, p))
+    for (int p : sim.lists().active(l)) {
+      if (!sim.hierarchy().can_split(l, p)) continue;
+      if (contact_[l][p])
+        worst.emplace_back(-std::numeric_limits<double>::infinity(), l, p);
+      else if (criterion_[l][p] > s_.refine_above)
         worst.emplace_back(-criterion_[l][p], l, p);
+    }
   std::sort(worst.begin(), worst.end());
   std::int64_t active = 0;
   for (int l = 0; l < sim.num_levels(); ++l) active += sim.lists().active(l).size();
@@ -93,7 +118,7 @@ void SpaceAdaptivity::merge_calm(HierarchicalSimulation& sim, int frame,
     calm.clear();
     for (int p : sim.lists().ghost_sub(l)) {  // sorted: so is `calm`
       if (split_frame_[l][p] >= 0 && frame - split_frame_[l][p] < s_.min_dwell_frames) continue;
-      if (!sim.hierarchy().can_merge(l, p)) continue;
+      if (!sim.hierarchy().can_merge(l, p) || holds_contact(sim, l, p)) continue;
       double worst = 0;
       for (int c : sim.hierarchy().links(l).children.row(p)) worst = std::max(worst, criterion_[l + 1][c]);
       if (worst < s_.coarsen_below) calm.push_back(p);
@@ -112,11 +137,36 @@ void SpaceAdaptivity::merge_calm(HierarchicalSimulation& sim, int frame,
   }
 }
 
+// Over budget: a quarter (at least one) of the subdivided points that can merge now, the
+// calmest children first, merge whatever their criterion and dwell time; leaves only, so
+// each frame over budget sheds one layer of the finest refinement.
+void SpaceAdaptivity::shed(HierarchicalSimulation& sim, int frame,
+                           std::vector<HierarchyEvent>& events) {
+  std::vector<std::tuple<double, int, int>> calmest;
+  for (int l = 0; l + 1 < sim.num_levels(); ++l)
+    for (int p : sim.lists().ghost_sub(l)) {
+      if (!sim.hierarchy().can_merge(l, p)) continue;
+      double worst = 0;
+      for (int c : sim.hierarchy().links(l).children.row(p)) worst = std::max(worst, criterion_[l + 1][c]);
+      calmest.emplace_back(worst, l, p);
+    }
+  std::sort(calmest.begin(), calmest.end());
+  const std::size_t n = calmest.empty() ? 0 : std::max<std::size_t>(1, calmest.size() / 4);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& [worst, l, p] = calmest[i];
+    if (!sim.hierarchy().can_merge(l, p)) continue;
+    sim.merge(l, p);
+    events.push_back({frame, "merge", l, p});
+  }
+}
+
 void SpaceAdaptivity::update(HierarchicalSimulation& sim, int frame,
-                             std::vector<HierarchyEvent>& events) {
+                             std::vector<HierarchyEvent>& events, BudgetRule budget) {
   evaluate(sim);
   if (!s_.enabled || sim.num_levels() == 1) return;
-  split_worst(sim, frame, events);
+  mark_contact_region(sim);
+  if (budget == BudgetRule::Free) split_worst(sim, frame, events);
+  if (budget == BudgetRule::Shed) shed(sim, frame, events);
   merge_calm(sim, frame, events);
   const int released = sim.collect_garbage();
   if (released > 0) events.push_back({frame, "gc", -1, released});

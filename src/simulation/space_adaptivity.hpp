@@ -4,6 +4,9 @@
 // `max_level` and an optional cap on active points; merges of subdivided points whose active
 // children are all below `coarsen_below` (hysteresis: coarsen_below < refine_above / r) after
 // at least `min_dwell_frames` frames, finest first; then garbage collection of ghosts (§4.7).
+// [Eng] Under the tools the finest level is made active before contact (contact_lookahead):
+// a skin vertex moved by a coarse level while a tool presses it jumps when a finer level takes
+// over (the coarse level cannot represent the dent), and so would the tool force.
 // [Eng] An active point most of whose same-level neighbours are subdivided splits with them,
 // and a subdivided point in that situation does not merge: such an island may have no
 // criterion of its own (a corner point with a single tet has Δu = 0 for any field) and, left
@@ -23,7 +26,16 @@ struct SpaceAdaptivitySettings {
   int max_level = 1 << 30;           // clamped to the last level
   std::int64_t max_active_points = 0;  // 0: no cap
   int min_dwell_frames = 5;
+  // Contact refines ahead of the tools (method.md §6.2 [Eng]): the active points that move a
+  // skin vertex a tool may reach within this many seconds split whatever their criterion, and
+  // their parents do not merge. 0: off (no tool).
+  double contact_lookahead = 0;
 };
+
+/// The real-time budget rule (method.md §6.2 point 5; thesis §5.2), decided from the wall
+/// time of the last frame's simulation: Free, no split (over `fraction` of the frame), or no
+/// split and the calmest subdivided points merged (over the whole frame).
+enum class BudgetRule { Free, HoldSplits, Shed };
 
 struct HierarchyEvent {
   int frame = 0;
@@ -37,7 +49,8 @@ class SpaceAdaptivity {
   SpaceAdaptivity(const SpaceAdaptivitySettings& settings, const HierarchicalSimulation& sim);
   /// Evaluates the criterion, splits/merges, collects garbage and applies the changes.
   /// Appends what happened to `events`.
-  void update(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events);
+  void update(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events,
+              BudgetRule budget = BudgetRule::Free);
   /// c_i of the last update, per level (0 where the point is not active).
   const std::vector<double>& criterion(int level) const { return criterion_[level]; }
   /// Evaluates the criterion only (for output when adaptivity is off).
@@ -50,10 +63,15 @@ class SpaceAdaptivity {
   bool split_within_cap(HierarchicalSimulation& sim, int l, int p, int frame, std::int64_t& active,
                         std::vector<HierarchyEvent>& events);
   void merge_calm(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events);
+  void shed(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events);
 
   SpaceAdaptivitySettings s_;
   std::vector<std::vector<double>> criterion_;
   std::vector<std::vector<int>> split_frame_;  // frame of the last split of each point
+  std::vector<std::vector<std::uint8_t>> contact_;  // 1: moves a skin vertex a tool may reach
+  std::vector<std::pair<int, int>> region_;          // (level, point) with contact_ set
+  void mark_contact_region(const HierarchicalSimulation& sim);
+  bool holds_contact(const HierarchicalSimulation& sim, int l, int p) const;
 };
 
 }  // namespace mrsim

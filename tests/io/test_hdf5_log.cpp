@@ -17,53 +17,20 @@
 #include "h5_reader.hpp"
 #include "io/hdf5_log.hpp"
 #include "sample_frames.hpp"
+#include "sample_log.hpp"
 #include "temp_dir.hpp"
 
 namespace mrsim {
 namespace {
 
+using test::append_sample_frame;
 using test::Array;
 using test::H5Id;
 using test::kSampleTimes;
+using test::kScenario;
+using test::LogFixture;
 using test::read_array;
-
-const char* const kScenario = "name: beam\nmaterial:\n  mu: 1.0e+4  # µ, Pa\n";
-
-struct LogFixture {
-  std::vector<test::SampleLevel> first = test::sample_frame(0);
-  Hdf5LogHeader header() const {
-    Hdf5LogHeader h;
-    h.version = "0.1.0";
-    h.git_revision = "abc1234";
-    h.scenario_yaml = kScenario;
-    h.start_time = "2026-01-02T03:04:05Z";
-    for (const auto& level : first) h.levels.push_back(&level.mesh);
-    h.time_level_steps = {0.04, 0.02, 0.01};
-    return h;
-  }
-};
-
-// Per-frame values with something to lose: non-round doubles and counters above 2^31.
-FrameRecord sample_record(int f, const std::vector<test::SampleLevel>& levels) {
-  FrameRecord r;
-  r.frame = f;
-  r.time = kSampleTimes[f];
-  r.kinetic_energy = 0.5 * f / 3.0;
-  r.elastic_energy = std::sqrt(2.0) * f;
-  r.wall_time = 1e-3 * (f + 1) / 7.0;
-  r.active = {8 - f, 12 + f};
-  r.ghosts = {f, 2 * f};
-  r.force_evaluations = {1000LL * f, (1LL << 40) + f};
-  r.time_levels = {3 + f, 0, 7 * f};
-  r.time_level_evaluations = {11LL * f, (1LL << 41) + f, 0};
-  for (const auto& level : levels) r.status.emplace_back(level.status);
-  return r;
-}
-
-void append_sample_frame(Hdf5Log& log, int f) {
-  const auto levels = test::sample_frame(f);
-  log.append_frame(sample_record(f, levels));
-}
+using test::sample_record;
 
 // Checks the first `frames` frames of the sample run in an open file.
 void expect_frames(hid_t file, int frames) {
@@ -260,6 +227,7 @@ TEST(Hdf5Log, ExplicitCloseThenUseIsALogicError) {
   log.close();  // idempotent
   EXPECT_THROW(append_sample_frame(log, 1), std::logic_error);
   EXPECT_THROW(log.append_event(1, "split", 0, 0), std::logic_error);
+  EXPECT_THROW(log.append_tool_samples(0, ToolSamples{}), std::logic_error);
 }
 
 TEST(Hdf5Log, UnwritableLocationThrowsRunErrorNamingTheFileWithoutLeaks) {

@@ -35,5 +35,27 @@ TEST(GradedBoxMesh, CellsFollowTheWidthsAndFillTheBox) {
   EXPECT_THROW(make_graded_box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), {1, 0}, 1, 1), std::invalid_argument);
 }
 
+TEST(GradedBoxMesh, EveryAxisFollowsItsWidths) {
+  const TetMesh m = make_graded_box_mesh(Vec3(-1, -2, -3), Vec3(1, 2, 0), {2, 1, 1, 2}, {1, 3},
+                                         {1, 1, 4});
+  std::set<double> xs, ys, zs;
+  for (const Vec3& p : m.points) {
+    xs.insert(p.x());
+    ys.insert(p.y());
+    zs.insert(p.z());
+  }
+  auto expect_nodes = [](const std::set<double>& got, const std::vector<double>& want) {
+    ASSERT_EQ(got.size(), want.size());
+    size_t i = 0;
+    for (double g : got) EXPECT_NEAR(g, want[i++], 1e-15);
+  };
+  expect_nodes(xs, {-1, -1.0 / 3, 0, 1.0 / 3, 1});
+  expect_nodes(ys, {-2, -1, 2});
+  expect_nodes(zs, {-3, -2.5, -2, 0});
+  double smallest = 0;
+  EXPECT_NEAR(total_volume(m, &smallest), 2.0 * 4.0 * 3.0, 1e-12);
+  EXPECT_GT(smallest, 0);
+}
+
 }  // namespace
 }  // namespace mrsim

@@ -1,0 +1,46 @@
+#include "contact/skin_binding.hpp"
+
+#include <cmath>
+
+#include "hierarchy/tet_locator.hpp"
+
+namespace mrsim {
+
+namespace {
+
+// Round-off dust (a skin vertex that is a vertex of the tet, or lies on one of its faces) is
+// removed so that such a vertex follows exactly the points it coincides with.
+Bary snapped(Bary b) {
+  double sum = 0;
+  for (double& x : b) {
+    if (std::abs(x) < 1e-12) x = 0;
+    sum += x;
+  }
+  for (double& x : b) x /= sum;
+  return b;
+}
+
+}  // namespace
+
+SkinBinding bind_skin(const Skin& skin, const std::vector<const TetMesh*>& levels) {
+  SkinBinding b;
+  const std::size_t n = skin.rest.size();
+  for (const TetMesh* mesh : levels) {
+    const TetLocator locator(*mesh);
+    std::vector<int> tet(n);
+    std::vector<Bary> bary(n);
+    std::vector<double> distance(n);
+    for (std::size_t s = 0; s < n; ++s) {
+      const TetLocation at = locator.locate(skin.rest[s]);
+      tet[s] = at.tet;
+      bary[s] = snapped(at.bary);
+      distance[s] = at.distance;
+    }
+    b.tet.push_back(std::move(tet));
+    b.bary.push_back(std::move(bary));
+    b.distance.push_back(std::move(distance));
+  }
+  return b;
+}
+
+}  // namespace mrsim

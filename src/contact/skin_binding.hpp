@@ -1,0 +1,21 @@
+#pragma once
+// Each skin vertex bound by barycentric coordinates to a tet of every level, once at rest
+// (method.md §6.2 point 1). A vertex outside a level's mesh (independent meshes of one object
+// do not share their boundary) gets the nearest tet with signed coordinates: it is
+// extrapolated, like the ghosts of §4.1 point 6.
+#include <vector>
+
+#include "contact/skin.hpp"
+#include "hierarchy/level_links.hpp"
+
+namespace mrsim {
+
+struct SkinBinding {
+  std::vector<std::vector<int>> tet;    // [level][skin vertex]
+  std::vector<std::vector<Bary>> bary;  // [level][skin vertex], Σ = 1
+  std::vector<std::vector<double>> distance;  // [level][skin vertex] m outside the level, 0 inside
+};
+
+SkinBinding bind_skin(const Skin& skin, const std::vector<const TetMesh*>& levels);
+
+}  // namespace mrsim

@@ -1,0 +1,161 @@
+#include "contact/skin_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mrsim {
+
+namespace {
+
+constexpr int kSweepSamples = 16;  // tool poses per frame in the broad phase
+
+double distance_to_segment(const Vec3& x, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double u = len2 > 0 ? std::clamp((x - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (x - (a + u * ab)).norm();
+}
+
+}  // namespace
+
+void ToolSampleBuffer::clear() {
+  time.clear();
+  position.clear();
+  force.clear();
+  orientation.clear();
+  contacts.clear();
+}
+
+SkinContact::SkinContact(Skin skin, SkinBinding binding, std::vector<Tool> tools,
+                         double p_wave_modulus)
+    : skin_(std::move(skin)), binding_(std::move(binding)), tools_(std::move(tools)) {
+  const std::size_t T = tools_.size();
+  for (const Tool& tool : tools_) {
+    std::vector<double> k(skin_.rest.size(), tool.contact.stiffness);
+    if (tool.contact.stiffness <= 0)
+      for (std::size_t s = 0; s < k.size(); ++s)
+        k[s] = skin_.edge[s] > 0 ? p_wave_modulus / skin_.edge[s] : 0.0;
+    stiffness_.push_back(std::move(k));
+  }
+  candidates_.resize(T);
+  vertex_force_.assign(skin_.rest.size(), Vec3::Zero());
+  tool_force_.assign(T, Vec3::Zero());
+  max_depth_.assign(T, 0.0);
+  contacts_.assign(T, 0);
+  samples_.resize(T);
+}
+
+void SkinContact::remap(const Hierarchy& h,
+                        const std::vector<const std::vector<std::uint8_t>*>& free_point) {
+  map_.build(h, binding_, free_point);
+}
+
+// A skin vertex is near tool k over [t0, t1] when, at its current position, it is within the
+// tool's bounding ball (plus a margin for the skin's own motion) of the tool's path: the path is
+// sampled, and the ball about the tool frame's origin contains the shape in any orientation.
+void SkinContact::near_tool(int k, double t0, double t1, const std::vector<LevelFields>& fields,
+                            std::vector<int>& out) const {
+  const int n = map_.size();
+  double speed = 0;
+  std::vector<Vec3> x(n);
+  for (int s = 0; s < n; ++s) {
+    x[s] = skin_.rest[s] + map_.value(s, fields, false);
+    speed = std::max(speed, map_.value(s, fields, true).norm());
+  }
+  const Tool& tool = tools_[k];
+  const double reach = bounding_radius(tool.shape) * 1.05 + 2.0 * speed * (t1 - t0);
+  std::vector<Vec3> path;
+  for (int i = 0; i <= kSweepSamples; ++i)
+    path.push_back(tool.trajectory.pose(t0 + (t1 - t0) * i / kSweepSamples).position);
+  // Sampling the path misses at most the chord of one interval: add the longest one.
+  double chord = 0;
+  for (int i = 1; i <= kSweepSamples; ++i) chord = std::max(chord, (path[i] - path[i - 1]).norm());
+  out.clear();
+  for (int s = 0; s < n; ++s) {
+    double d = (x[s] - path[0]).norm();
+    for (int i = 1; i <= kSweepSamples && d > reach + chord; ++i)
+      d = std::min(d, distance_to_segment(x[s], path[i - 1], path[i]));
+    if (d <= reach + chord) out.push_back(s);
+  }
+}
+
+void SkinContact::begin_frame(double t0, double t1, const std::vector<LevelFields>& fields) {
+  for (int k = 0; k < num_tools(); ++k) near_tool(k, t0, t1, fields, candidates_[k]);
+}
+
+Vec3 SkinContact::penalty(int k, const ToolPose& pose, int s,
+                          const std::vector<LevelFields>& fields, double& depth) const {
+  const Tool& tool = tools_[k];
+  const Vec3 x = skin_.rest[s] + map_.value(s, fields, false);
+  const ShapeProbe probe_at = probe(tool.shape, pose.to_local(x));
+  depth = probe_at.depth;
+  if (depth <= 0) return Vec3::Zero();
+  const Vec3 n = pose.orientation * probe_at.normal;
+  const Vec3 relative = map_.value(s, fields, true) - pose.velocity_at(x);
+  const double pressure = stiffness_[k][s] * depth - tool.contact.damping * relative.dot(n);
+  return std::max(pressure, 0.0) * skin_.area[s] * n;
+}
+
+void SkinContact::touch(const std::vector<Vec3*>& external, const ActiveTerm& t, const Vec3& f,
+                        Vec3& support) {
+  if (t.level < 0) {
+    support += t.weight * f;
+    return;
+  }
+  external[t.level][t.point] += t.weight * f;
+  touched_level_.push_back(t.level);
+  touched_point_.push_back(t.point);
+}
+
+void SkinContact::clear(const std::vector<Vec3*>& external) {
+  for (std::size_t i = 0; i < touched_level_.size(); ++i)
+    external[touched_level_[i]][touched_point_[i]].setZero();
+  touched_level_.clear();
+  touched_point_.clear();
+}
+
+Vec3 SkinContact::apply(double t, const std::vector<LevelFields>& fields,
+                        const std::vector<Vec3*>& external) {
+  for (int s : forced_) vertex_force_[s].setZero();
+  forced_.clear();
+  Vec3 support = Vec3::Zero();
+  body_force_.setZero();
+  for (std::size_t k = 0; k < tools_.size(); ++k) {
+    const ToolPose pose = tools_[k].trajectory.pose(t);
+    tool_force_[k].setZero();
+    max_depth_[k] = 0;
+    contacts_[k] = 0;
+    for (int s : candidates_[k]) {
+      double depth = 0;
+      const Vec3 f = penalty(static_cast<int>(k), pose, s, fields, depth);
+      if (depth <= 0) continue;
+      max_depth_[k] = std::max(max_depth_[k], depth);
+      ++contacts_[k];
+      if (vertex_force_[s].isZero()) forced_.push_back(s);
+      vertex_force_[s] += f;
+      tool_force_[k] -= f;
+      body_force_ += f;
+      for (const ActiveTerm* a = map_.begin(s); a != map_.end(s); ++a) touch(external, *a, f, support);
+    }
+  }
+  return support;
+}
+
+void SkinContact::record_sample(double t) {
+  for (std::size_t k = 0; k < tools_.size(); ++k) {
+    const ToolPose pose = tools_[k].trajectory.pose(t);
+    ToolSampleBuffer& b = samples_[k];
+    b.time.push_back(t);
+    b.position.push_back(pose.position);
+    const Quat& q = pose.orientation;
+    b.orientation.push_back({q.w(), q.x(), q.y(), q.z()});
+    b.force.push_back(tool_force_[k]);
+    b.contacts.push_back(contacts_[k]);
+  }
+}
+
+void SkinContact::clear_samples() {
+  for (ToolSampleBuffer& b : samples_) b.clear();
+}
+
+}  // namespace mrsim

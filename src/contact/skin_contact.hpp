@@ -1,0 +1,86 @@
+#pragma once
+// Tools against the object's skin (method.md §6.2): the broad phase once per display frame
+// (skin vertices that can reach a tool during the frame), the penalty response at every
+// simulation step on those candidates, the forces carried to the active points through the
+// skin map, and the haptic-rate samples of every tool (pose, force, contacts).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "contact/skin.hpp"
+#include "contact/skin_binding.hpp"
+#include "contact/skin_map.hpp"
+#include "contact/tool.hpp"
+
+namespace mrsim {
+
+/// What one tool did at every step of the current frame (struct of arrays, log.h5 /tool*).
+struct ToolSampleBuffer {
+  std::vector<double> time;
+  std::vector<Vec3> position, force;
+  std::vector<std::array<double, 4>> orientation;  // w, x, y, z
+  std::vector<std::int32_t> contacts;
+  void clear();
+};
+
+class SkinContact {
+ public:
+  /// `p_wave_modulus` (λ + 2μ, Pa) sets the automatic stiffness of a tool whose law has none:
+  /// (λ + 2μ) / h at a skin vertex whose edges have mean length h, about the P-wave stiffness
+  /// of the skin element, which the Courant step of the finest level tolerates.
+  SkinContact(Skin skin, SkinBinding binding, std::vector<Tool> tools, double p_wave_modulus);
+
+  /// After every topology change (which active points move the skin).
+  void remap(const Hierarchy& h, const std::vector<const std::vector<std::uint8_t>*>& free_point);
+  /// Broad phase for the frame [t0, t1] at the current state.
+  void begin_frame(double t0, double t1, const std::vector<LevelFields>& fields);
+  /// Skin vertices that tool k may reach during [t0, t1] (sorted; O(skin vertices)).
+  void near_tool(int k, double t0, double t1, const std::vector<LevelFields>& fields,
+                 std::vector<int>& out) const;
+  /// Removes the forces of the last apply() from `external` (per level, N).
+  void clear(const std::vector<Vec3*>& external);
+  /// Contact forces at time t for the current state, added to the active points' `external`
+  /// (call clear() first); what reaches fixed points is returned (the support's share).
+  /// O(candidates × row length), no allocation once the lists have grown.
+  Vec3 apply(double t, const std::vector<LevelFields>& fields, const std::vector<Vec3*>& external);
+  /// Appends one sample per tool for the forces of the last apply().
+  void record_sample(double t);
+
+  int num_tools() const { return static_cast<int>(tools_.size()); }
+  const Tool& tool(int k) const { return tools_[k]; }
+  const ToolSampleBuffer& samples(int k) const { return samples_[k]; }
+  void clear_samples();
+  /// Force the object exerts on tool k at the last apply() (N).
+  const Vec3& tool_force(int k) const { return tool_force_[k]; }
+  /// Largest depth of a skin vertex inside tool k at the last apply() (m, 0 when none).
+  double max_depth(int k) const { return max_depth_[k]; }
+  /// Σ of the contact forces handed to the body at the last apply(), support included (N).
+  Vec3 body_force() const { return body_force_; }
+
+  const Skin& skin() const { return skin_; }
+  const SkinMap& map() const { return map_; }
+  /// Contact force on each skin vertex at the last apply() (N).
+  const std::vector<Vec3>& vertex_force() const { return vertex_force_; }
+
+ private:
+  void touch(const std::vector<Vec3*>& external, const ActiveTerm& t, const Vec3& f, Vec3& support);
+  Vec3 penalty(int k, const ToolPose& pose, int s, const std::vector<LevelFields>& fields,
+               double& depth) const;
+
+  Skin skin_;
+  SkinBinding binding_;
+  SkinMap map_;
+  std::vector<Tool> tools_;
+  std::vector<std::vector<double>> stiffness_;  // per tool, per skin vertex (Pa/m)
+  std::vector<std::vector<int>> candidates_;  // per tool, skin vertices
+  std::vector<int> touched_level_, touched_point_;  // where the last forces went
+  std::vector<int> forced_;                          // skin vertices with a force
+  std::vector<Vec3> vertex_force_;
+  std::vector<Vec3> tool_force_;
+  std::vector<double> max_depth_;
+  std::vector<std::int32_t> contacts_;
+  std::vector<ToolSampleBuffer> samples_;
+  Vec3 body_force_ = Vec3::Zero();
+};
+
+}  // namespace mrsim

@@ -1,0 +1,68 @@
+#include "contact/skin_map.hpp"
+
+#include <algorithm>
+#include <tuple>
+
+namespace mrsim {
+
+namespace {
+
+int moving_level(const Hierarchy& h, const SkinBinding& b, int s) {
+  for (int l = h.num_levels() - 1; l > 0; --l) {
+    const Tet& t = h.level(l).mesh->tets[b.tet[l][s]];
+    bool all = true;
+    for (int k = 0; k < 4; ++k)
+      if (b.bary[l][s][k] != 0 && h.state(l, t[k]) == NodeState::Inactive) all = false;
+    if (all) return l;
+  }
+  return 0;
+}
+
+// Same active point reached through several ghosts: one term, so a row is short and the
+// forces it carries are summed in a fixed order.
+void merge_terms(std::vector<ActiveTerm>& row) {
+  auto key = [](const ActiveTerm& a) { return std::tuple(a.level, a.point); };
+  std::sort(row.begin(), row.end(),
+            [&](const ActiveTerm& a, const ActiveTerm& b) { return key(a) < key(b); });
+  std::size_t n = 0;
+  for (const ActiveTerm& t : row) {
+    if (n > 0 && key(row[n - 1]) == key(t))
+      row[n - 1].weight += t.weight;
+    else
+      row[n++] = t;
+  }
+  row.resize(n);
+}
+
+}  // namespace
+
+void SkinMap::build(const Hierarchy& h, const SkinBinding& b,
+                    const std::vector<const std::vector<std::uint8_t>*>& free_point) {
+  const int n = static_cast<int>(b.tet[0].size());
+  level_.resize(n);
+  start_.assign(1, 0);
+  terms_.clear();
+  for (int s = 0; s < n; ++s) {
+    const int l = moving_level(h, b, s);
+    level_[s] = l;
+    row_.clear();
+    const Tet& t = h.level(l).mesh->tets[b.tet[l][s]];
+    for (int k = 0; k < 4; ++k)
+      if (b.bary[l][s][k] != 0) append_active_row(h, free_point, l, t[k], b.bary[l][s][k], row_);
+    merge_terms(row_);
+    terms_.insert(terms_.end(), row_.begin(), row_.end());
+    start_.push_back(static_cast<int>(terms_.size()));
+  }
+}
+
+Vec3 SkinMap::value(int s, const std::vector<LevelFields>& fields, bool velocity) const {
+  Vec3 x = Vec3::Zero();
+  for (const ActiveTerm* t = begin(s); t != end(s); ++t)
+    if (t->level >= 0) {
+      const LevelFields& f = fields[t->level];
+      x += t->weight * (velocity ? f.v[t->point] : f.u[t->point]);
+    }
+  return x;
+}
+
+}  // namespace mrsim

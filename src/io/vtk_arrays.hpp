@@ -1,0 +1,39 @@
+#pragma once
+// VTK arrays filled from the simulation's spans, shared by the level grids and the surface and
+// tool blocks so that every block stores the same kinds of values the same way (float64
+// vectors, exact-width integers, TimeValue). Internal to mrsim_io.
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkPoints.h>
+#include <vtkSmartPointer.h>
+
+#include <span>
+
+#include "core/vec.hpp"
+
+namespace mrsim {
+
+/// Points in float64: float would lose the sub-micrometre displacements.
+vtkSmartPointer<vtkPoints> double_points(vtkIdType count);
+
+/// A 3-component float64 array, one tuple per value.
+vtkSmartPointer<vtkDoubleArray> vector_array(const char* name, std::span<const Vec3> values);
+
+/// One value per entry into a VTK array of the matching width (ArrayT::ValueType), e.g.
+/// vtkSignedCharArray for int8 so that the XML says Int8.
+template <class ArrayT, class T>
+vtkSmartPointer<ArrayT> scalar_array(const char* name, std::span<const T> values) {
+  auto array = vtkSmartPointer<ArrayT>::New();
+  array->SetName(name);
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    array->SetValue(static_cast<vtkIdType>(i), values[i]);
+  }
+  return array;
+}
+
+/// Adds `time` (s) as the field array TimeValue, the name ParaView reads when a single piece
+/// is opened alone.
+void add_time_value(vtkFieldData* data, double time);
+
+}  // namespace mrsim

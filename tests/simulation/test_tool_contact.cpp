@@ -1,0 +1,286 @@
+// Rigid tools pushing the skin (issue 6, method.md §6.2; validation.md §2.9): Hertz and
+// Boussinesq on a block graded under the tool, action-reaction and virtual work through the
+// skin map, refinement under a sliding tool and the force signal across level changes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "contact_fixture.hpp"
+#include "simulation/space_adaptivity.hpp"
+#include "simulation/stable_step.hpp"
+
+namespace mrsim {
+namespace {
+
+using testing::IndentedBlock;
+using testing::vertical_tool;
+
+struct Sample {
+  double depth;        // m, the tool's depth below the undeformed surface
+  double penetration;  // m, deepest skin vertex inside the tool
+  double force;        // N, upward force on the tool
+};
+
+double courant_dt(const TetMesh& mesh, const MaterialLaw& law) {
+  return 0.5 * shortest_edge(mesh) / std::sqrt((law.lambda + 2 * law.mu) / law.density);
+}
+
+// Runs to t_end, sampling every `every` steps while the tool is below the surface (its working
+// end `tip` m below the tool frame's origin).
+std::vector<Sample> indent(HierarchicalSimulation& sim, double dt, double t_end, int every,
+                           double tip) {
+  std::vector<Sample> out;
+  const int steps = static_cast<int>(std::lround(t_end / dt));
+  for (int s = 0; s < steps; s += every) {
+    sim.advance(every);
+    const SkinContact& c = *sim.contact();
+    const double depth = -(c.tool(0).trajectory.pose(sim.time()).position.z() - tip);
+    if (depth > 0) out.push_back({depth, c.max_depth(0), c.tool_force(0).z()});
+  }
+  return out;
+}
+
+// Least-squares slope of log F against log d over the samples with d in [lo, hi].
+double log_slope(const std::vector<Sample>& samples, double lo, double hi) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (const Sample& s : samples)
+    if (s.depth >= lo && s.depth <= hi && s.force > 0) {
+      const double x = std::log(s.depth), y = std::log(s.force);
+      n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+// Sphere R = 5 mm into a 40 x 40 x 20 mm block (E = 10 kPa, nu = 0.3) to 0.5 mm over 0.5 s,
+// cells of 0.4 mm under the tool (contact radius 1.0-1.6 mm: 2.5-4 cells), automatic penalty.
+TEST(ToolContact, HertzSphereForceGrowsAsDepthToTheThreeHalves) {
+  const IndentedBlock block;
+  const TetMesh mesh = block.mesh();
+  const double R = 5e-3, d_max = 5e-4, t_load = 0.5;
+  HierarchySetup s = block.setup(mesh, vertical_tool({ToolShapeKind::Sphere, R, 0}, R + 2e-5,
+                                                     R - d_max, t_load));
+  s.dt = courant_dt(mesh, s.law);
+  HierarchicalSimulation sim({&mesh}, s);
+  const std::vector<Sample> samples = indent(sim, s.dt, t_load, 50, R);
+  ASSERT_GT(samples.size(), 50u);
+  const double slope = log_slope(samples, 2e-4, 5e-4);
+  double worst = 0, deepest = 0;
+  for (const Sample& x : samples) {
+    deepest = std::max(deepest, x.penetration);
+    if (x.depth < 2.5e-4) continue;
+    const double hertz = 4.0 / 3.0 * block.e_star() * std::sqrt(R) * std::pow(x.depth, 1.5);
+    worst = std::max(worst, std::abs(x.force / hertz - 1));
+  }
+  const Sample& last = samples.back();
+  const double dent = last.depth - last.penetration;
+  std::printf("Hertz: slope %.3f on d in [0.2, 0.5] mm; F/F_hertz(d) worst %.3f for d >= 0.25 mm; "
+              "at d = %.3f mm: F = %.4e N; against the dent made (d - penetration = %.3f mm): "
+              "%.3f; deepest penetration %.4f mm = %.2f h0\n",
+              slope, 1 + worst, last.depth * 1e3, last.force, dent * 1e3,
+              last.force / (4.0 / 3.0 * block.e_star() * std::sqrt(R) * std::pow(dent, 1.5)),
+              deepest * 1e3, deepest / block.h0);
+  EXPECT_NEAR(slope, 1.5, 0.15);
+  EXPECT_LT(worst, 0.15);
+  EXPECT_LT(deepest, 0.25 * block.h0);  // the penalty's penetration: a fraction of a cell
+}
+
+// Flat punch a = 2 mm to d = 0.1 mm over 0.3 s, held 0.1 s: F = 2 a E* d within 15 %.
+TEST(ToolContact, FlatPunchForceIsWithinFifteenPercentOfBoussinesq) {
+  const IndentedBlock block;
+  const TetMesh mesh = block.mesh();
+  const double a = 2e-3, d = 1e-4, t_load = 0.3, t_end = 0.4;
+  HierarchySetup s = block.setup(
+      mesh, vertical_tool({ToolShapeKind::FlatCylinder, a, 5e-3}, 2e-5, -d, t_load));
+  s.dt = courant_dt(mesh, s.law);
+  HierarchicalSimulation sim({&mesh}, s);
+  const std::vector<Sample> samples = indent(sim, s.dt, t_end, 50, 0.0);
+  const Sample& last = samples.back();
+  const double boussinesq = 2 * a * block.e_star() * d;
+  std::printf("Boussinesq: F = %.4e N, 2 a E* d = %.4e N, ratio %.3f; penetration %.4f mm; "
+              "against the dent made: %.3f\n",
+              last.force, boussinesq, last.force / boussinesq, last.penetration * 1e3,
+              last.force / (2 * a * block.e_star() * (d - last.penetration)));
+  EXPECT_NEAR(last.force / boussinesq, 1.0, 0.15);
+  EXPECT_LT(last.penetration, 0.25 * block.h0);
+}
+
+// Three independent box meshes (4, 2.2, 1.2 mm cells) of a 20 x 20 x 10 mm block; a sphere
+// slides across at 1 mm depth so that regions under it split ahead and merge behind it.
+struct SlidingProbe {
+  std::vector<TetMesh> meshes;
+  HierarchySetup setup;
+  double frame = 0.02;
+  int steps_per_frame = 0;
+
+  explicit SlidingProbe(Coupling coupling) {
+    // Odd cell counts: the levels share only the box's corners (see the note in
+    // docs/contact.md on coincident points).
+    for (int n : {5, 9, 17})
+      meshes.push_back(make_box_mesh(Vec3(-0.01, -0.01, -0.01), Vec3(0.01, 0.01, 0), n, n, (n + 1) / 2));
+    IndentedBlock material;
+    const double R = 4e-3, depth = 1e-3;
+    Tool tool;
+    tool.name = "probe";
+    tool.shape = {ToolShapeKind::Sphere, R, 0};
+    tool.trajectory = ToolTrajectory({{0.0, Vec3(-0.006, 0, R + 5e-4)},
+                                      {0.1, Vec3(-0.006, 0, R - depth)},
+                                      {0.6, Vec3(0.006, 0, R - depth)}},
+                                     Interpolation::Smooth, "probe");
+    setup = material.setup(meshes[0], tool);
+    setup.coupling = coupling;
+    setup.fixed.clear();
+    for (const TetMesh& m : meshes) {
+      std::vector<std::uint8_t> fixed(m.points.size(), 0);
+      for (size_t p = 0; p < m.points.size(); ++p) fixed[p] = m.points[p].z() < -0.01 + 1e-9;
+      setup.fixed.push_back(fixed);
+    }
+    const double dt = courant_dt(meshes.back(), setup.law);
+    steps_per_frame = static_cast<int>(std::ceil(frame / dt));
+    setup.dt = frame / steps_per_frame;
+    setup.steps_per_frame = steps_per_frame;
+  }
+
+  std::vector<const TetMesh*> pointers() const {
+    std::vector<const TetMesh*> p;
+    for (const TetMesh& m : meshes) p.push_back(&m);
+    return p;
+  }
+
+  SpaceAdaptivitySettings adaptivity() const {
+    SpaceAdaptivitySettings s;
+    s.enabled = true;
+    s.refine_above = 1.0;  // only contact refines: the level under the tool follows it
+    s.coarsen_below = 0.5;
+    s.min_dwell_frames = 2;
+    s.contact_lookahead = 3 * frame;
+    return s;
+  }
+};
+
+// Every step: the force on the tool is minus the force handed to the body (active points plus
+// the support's share). The level under the probe is the finest one whenever it touches.
+// The force signal across the frames where points split and merge under the moving probe has
+// no jump larger than a stated fraction of the force.
+TEST(ToolContact, SlidingProbeActionReactionRefinementAndNoForceSpikes) {
+  SlidingProbe probe(Coupling::Energy);
+  HierarchicalSimulation sim(probe.pointers(), probe.setup);
+  SpaceAdaptivity adapt(probe.adaptivity(), sim);
+  std::vector<HierarchyEvent> events;
+  std::vector<double> fz;
+  std::vector<int> changed;  // sample index after which the topology changed
+  double worst_balance = 0, scale = 0, deepest = 0;
+  int touching_on_coarse = 0, touching = 0;
+  for (int frame = 1; frame <= 30; ++frame) {
+    for (int s = 0; s < probe.steps_per_frame; ++s) {
+      sim.advance(1);
+      const SkinContact& c = *sim.contact();
+      worst_balance = std::max(worst_balance, (c.tool_force(0) + sim.external_on_body()).norm());
+      scale = std::max(scale, c.tool_force(0).norm());
+      deepest = std::max(deepest, c.max_depth(0));
+      fz.push_back(c.tool_force(0).z());
+      for (int v = 0; v < c.map().size(); ++v)
+        if (c.vertex_force()[v].squaredNorm() > 0) {
+          ++touching;
+          touching_on_coarse += c.map().level(v) != sim.num_levels() - 1;
+        }
+    }
+    events.clear();
+    adapt.update(sim, frame, events);
+    if (!events.empty()) changed.push_back(static_cast<int>(fz.size()) - 1);
+  }
+  // Jumps of the force between consecutive steps: at the topology changes and elsewhere
+  // while the probe slides at constant depth (t > 0.12 s).
+  const int sliding_from = static_cast<int>(0.12 / probe.setup.dt);
+  double jump_at_change = 0, jump_elsewhere = 0, mean = 0;
+  int n = 0;
+  for (int i = sliding_from; i + 1 < static_cast<int>(fz.size()); ++i) {
+    const double jump = std::abs(fz[i + 1] - fz[i]);
+    const bool at_change = std::find(changed.begin(), changed.end(), i) != changed.end();
+    (at_change ? jump_at_change : jump_elsewhere) = std::max(at_change ? jump_at_change : jump_elsewhere, jump);
+    mean += fz[i];
+    ++n;
+  }
+  mean /= n;
+  std::printf("sliding probe: %zu topology changes; |F_tool + F_body| <= %.2e of %.3e N; "
+              "contacts on a coarser level %d of %d; mean F_z %.4e N; largest step-to-step jump "
+              "at a change %.3e N (%.2f %% of the mean), elsewhere %.3e N; penetration %.4f mm\n",
+              changed.size(), worst_balance, scale, touching_on_coarse, touching, mean,
+              jump_at_change, 100 * jump_at_change / mean, jump_elsewhere, deepest * 1e3);
+  EXPECT_GT(changed.size(), 5u);
+  EXPECT_LT(worst_balance, 1e-12 * scale);
+  EXPECT_EQ(touching_on_coarse, 0);
+  // The skin is coarse under the probe (contact radius 2 mm, 1.2 mm cells): vertices entering
+  // and leaving contact already make the force step by several % while it slides.
+  EXPECT_LT(jump_at_change, 0.10 * mean);
+  EXPECT_LT(jump_at_change, 1.5 * jump_elsewhere);
+}
+
+// The skin follows the hierarchy's own interpolation (a skin vertex that is a finest point,
+// active or ghost, has exactly that point's displacement), and the contact forces reach the
+// active points through the transpose of that map: for any virtual displacement of the active
+// points the work on the skin equals the work of the forces the simulation applied.
+TEST(ToolContact, SkinFollowsTheHierarchyAndContactForcesDoItsVirtualWork) {
+  SlidingProbe probe(Coupling::Energy);
+  HierarchicalSimulation sim(probe.pointers(), probe.setup);
+  SpaceAdaptivity adapt(probe.adaptivity(), sim);
+  std::vector<HierarchyEvent> events;
+  for (int frame = 1; frame <= 8; ++frame) {  // the probe presses; levels mixed under it
+    sim.advance_frame();
+    adapt.update(sim, frame, events);
+  }
+  sim.advance(1);
+  const SkinContact& c = *sim.contact();
+  ASSERT_GT(c.tool_force(0).norm(), 0);
+  const int fine = sim.num_levels() - 1;
+  const TetMesh& fine_mesh = *sim.model(fine).mesh;
+  std::vector<Vec3> u, v;
+  sim.skin_state(u, v);
+  int ghosts = 0;
+  double worst = 0, scale = 0;
+  for (int s = 0; s < c.map().size(); ++s) {
+    if (c.map().level(s) != fine) continue;
+    for (int p = 0; p < static_cast<int>(fine_mesh.points.size()); ++p)
+      if ((fine_mesh.points[p] - c.skin().rest[s]).norm() < 1e-12) {
+        const NodeState st = sim.hierarchy().state(fine, p);
+        ghosts += st == NodeState::GhostIface;
+        worst = std::max(worst, (u[s] - sim.state(fine).u[p]).norm());
+        scale = std::max(scale, u[s].norm());
+      }
+  }
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> r(-1, 1);
+  std::vector<std::vector<Vec3>> du(sim.num_levels()), dv(sim.num_levels());
+  std::vector<LevelFields> fields;
+  double on_active = 0, on_skin = 0;
+  for (int l = 0; l < sim.num_levels(); ++l) {
+    du[l].assign(sim.model(l).num_points(), Vec3::Zero());
+    dv[l] = du[l];
+    for (int p : sim.lists().active(l)) {
+      if (sim.state(l).free_point[p]) du[l][p] = Vec3(r(rng), r(rng), r(rng));
+      on_active += sim.external_force(l)[p].dot(du[l][p]);
+    }
+    fields.push_back({du[l].data(), dv[l].data()});
+  }
+  int through_ghosts = 0;
+  for (int s = 0; s < c.map().size(); ++s) {
+    if (c.vertex_force()[s].squaredNorm() == 0) continue;
+    on_skin += c.vertex_force()[s].dot(c.map().value(s, fields, false));
+    for (const ActiveTerm* t = c.map().begin(s); t != c.map().end(s); ++t)
+      through_ghosts += t->level != c.map().level(s);
+  }
+  std::printf("skin = finest point: worst %.2e of %.2e m (%d of them interface ghosts); virtual "
+              "work on the skin %.9e, on the active points %.9e; %d contact terms through "
+              "another level\n",
+              worst, scale, ghosts, on_skin, on_active, through_ghosts);
+  EXPECT_GT(ghosts, 0);
+  EXPECT_LE(worst, 1e-14 * scale);
+  EXPECT_NEAR(on_skin, on_active, 1e-12 * std::abs(on_skin));
+  EXPECT_GT(std::abs(on_skin), 0);
+}
+
+}  // namespace
+}  // namespace mrsim
