@@ -14,6 +14,11 @@
 
 namespace mrsim {
 
+/// The longest interval between two samples of the tool force (s): a haptic device wants its
+/// force at 1 kHz (thesis §5.1). With time levels, ticks where nobody is kicked are still
+/// visited at this rate to move the skin and sample the force.
+inline constexpr double kHapticPeriod = 1e-3;
+
 /// What one tool did at every step of the current frame (struct of arrays, log.h5 /tool*).
 struct ToolSampleBuffer {
   std::vector<double> time;

@@ -116,6 +116,7 @@ struct Scenario {
   std::vector<LevelSpec> levels;
   LengthUnit units = LengthUnit::Metre;
   std::filesystem::path skin;  // absolute; empty: the finest level's boundary
+  LengthUnit skin_units = LengthUnit::Metre;  // of the skin file (default: object.units)
   MaterialSpec material;
   std::vector<FixedRegion> fixed;
   std::vector<SurfaceLoadSpec> loads;

@@ -138,9 +138,14 @@ Scenario build_scenario(const json& resolved, const std::filesystem::path& sourc
   s.source = source;
   for (const auto& level : resolved["object"]["levels"])
     s.levels.push_back({file_path(level["mesh"], source)});
-  if (resolved["object"].contains("skin") && resolved["object"]["skin"].contains("surface"))
-    s.skin = file_path(resolved["object"]["skin"]["surface"], source);
   s.units = resolved["object"]["units"] == "mm" ? LengthUnit::Millimetre : LengthUnit::Metre;
+  s.skin_units = s.units;
+  if (resolved["object"].contains("skin")) {
+    const json& skin = resolved["object"]["skin"];
+    if (skin.contains("surface")) s.skin = file_path(skin["surface"], source);
+    if (skin.contains("units"))
+      s.skin_units = skin["units"] == "mm" ? LengthUnit::Millimetre : LengthUnit::Metre;
+  }
   s.material = material(resolved["material"]);
   for (const auto& f : resolved["fixed"]) s.fixed.push_back(fixed_region(f));
   for (const auto& l : resolved["loads"]) s.loads.push_back(load_spec(l));

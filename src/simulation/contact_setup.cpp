@@ -46,7 +46,7 @@ Skin scenario_skin(const Scenario& sc, const TetMesh& finest) {
   weld_identical_points(surface);
   if (surface.triangles.empty())
     throw InputError("object.skin.surface: " + sc.skin.string() + " has no triangle");
-  if (sc.units == LengthUnit::Millimetre) scale_surface(surface, 1e-3);
+  if (sc.skin_units == LengthUnit::Millimetre) scale_surface(surface, 1e-3);
   return surface_skin(std::move(surface.points), std::move(surface.triangles));
 }
 

@@ -10,7 +10,7 @@
 
 namespace mrsim {
 
-/// The skin the tools touch: the scenario's surface file (in object.units) or the boundary of
+/// The skin the tools touch: the scenario's surface file (in object.skin.units) or the boundary of
 /// the finest level. Throws InputError on an unreadable or empty surface.
 Skin scenario_skin(const Scenario& sc, const TetMesh& finest);
 

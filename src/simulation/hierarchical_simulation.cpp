@@ -151,6 +151,10 @@ void HierarchicalSimulation::run_w_cycle(std::vector<TimeLevelChange>& changes) 
   const double tick = frame_dt_ / wc.ticks_per_frame();
   const double frame_start = time_;
   int drifted = 0;  // tick the positions are at
+  // Ticks between two tool samples: the largest power of two within the haptic period.
+  int haptic = 1;
+  while (2 * haptic * tick <= kHapticPeriod * (1 + 1e-12) && 2 * haptic <= wc.ticks_per_frame())
+    haptic *= 2;
   ta.begin_frame();
   in_sub_step_ = true;
   while (!ta.frame_done()) {
@@ -164,7 +168,14 @@ void HierarchicalSimulation::run_w_cycle(std::vector<TimeLevelChange>& changes) 
         block.dt_scale = k >= 0 ? wc.period(k) : 1.0;
         any = any || !block.points->empty();
       }
-    if (!any) continue;
+    if (!any) {
+      if (contact_ && s.tick % haptic == 0) {  // nobody kicked: the skin moves on, sampled
+        drift_all(drifted, s.tick, frame_start, tick);
+        drifted = s.tick;
+        contact_->record_sample(clock_);
+      }
+      continue;
+    }
     drift_all(drifted, s.tick, frame_start, tick);
     drifted = s.tick;
     if (contact_) contact_->record_sample(clock_);
@@ -364,6 +375,10 @@ void HierarchicalSimulation::merge(int level, int point) { hierarchy_->merge(lev
 Vec3 HierarchicalSimulation::fresh_value(int l, int q, bool velocity) const {
   const bool own = l == 0 || (!stale_[l][q] && hierarchy_->state(l, q) != NodeState::Inactive);
   if (own) return velocity ? states_[l].v[q] : states_[l].u[q];
+  return from_parent(l, q, velocity);
+}
+
+Vec3 HierarchicalSimulation::from_parent(int l, int q, bool velocity) const {
   const auto& emb = hierarchy_->links(l).parent_tet;
   const Tet& t = models_[l - 1]->mesh->tets[emb.tet[q]];
   Vec3 x = Vec3::Zero();
@@ -383,9 +398,9 @@ void HierarchicalSimulation::apply_changes() {
       states_[l].v[q].setZero();
       continue;
     }
-    const Vec3 u = fresh_value(l, q, false), v = fresh_value(l, q, true);
-    states_[l].u[q] = u;
-    states_[l].v[q] = v;
+    // From its parent tet (never its own value: it is stale). A woken point is never on level 0.
+    states_[l].u[q] = from_parent(l, q, false);
+    states_[l].v[q] = from_parent(l, q, true);
   }
   woken_.clear();
   refile_fixed_ghosts();

@@ -111,6 +111,7 @@ class HierarchicalSimulation {
 
  private:
   Vec3 fresh_value(int l, int q, bool velocity) const;
+  Vec3 from_parent(int l, int q, bool velocity) const;
   void resolve_loads();
   void deposit(int load, int l, int p, const Vec3& force);
   void update_external(double t);

@@ -117,3 +117,50 @@ TEST(SpaceAdaptivity, ABodyRefinedEverywhereIsTheFinestMeshWithNoCoarseIsland) {
   EXPECT_TRUE(sim.lists().active(1).empty());
   EXPECT_EQ(sim.lists().active(2).size(), meshes[2].points.size());
 }
+
+// The real-time budget (method.md §6.2 point 5): over `fraction` of the frame no split happens
+// (calm points still merge); over the whole frame a quarter of the mergeable subdivided points
+// merge, calmest first, whatever their criterion and dwell time.
+TEST(SpaceAdaptivity, BudgetHoldsSplitsAndShedsTheCalmestRefinement) {
+  const auto meshes = three_boxes();
+  HierarchicalSimulation sim({&meshes[0], &meshes[1], &meshes[2]}, soft_material());
+  SpaceAdaptivitySettings s = refine_at(0.02);
+  s.coarsen_below = 0.005;
+  s.min_dwell_frames = 100;  // nothing merges by itself during this test
+  SpaceAdaptivity adapt(s, sim);
+  std::vector<HierarchyEvent> events;
+  auto count = [&](const char* kind) {
+    return std::count_if(events.begin(), events.end(), [&](auto& e) { return e.kind == kind; });
+  };
+  impose(sim, 2e-3);
+  adapt.update(sim, 0, events, BudgetRule::HoldSplits);
+  EXPECT_EQ(events.size(), 0u);  // a dent that would refine: held
+  EXPECT_TRUE(sim.lists().active(1).empty());
+  for (int frame = 1; frame < 4; ++frame) {
+    impose(sim, 2e-3);
+    adapt.update(sim, frame, events);
+  }
+  ASSERT_GT(count("split"), 0);
+  auto subdivided = [&] {
+    std::size_t n = 0;
+    for (int l = 0; l < 2; ++l) n += sim.lists().ghost_sub(l).size();
+    return n;
+  };
+  const std::size_t before = subdivided();
+  const std::int64_t fine_before = static_cast<std::int64_t>(sim.lists().active(2).size());
+  events.clear();
+  impose(sim, 2e-3);  // still dented: without the budget nothing would merge
+  adapt.update(sim, 4, events, BudgetRule::Shed);
+  EXPECT_EQ(count("split"), 0);
+  EXPECT_GE(4 * count("merge"), 1);
+  EXPECT_EQ(subdivided(), before - static_cast<std::size_t>(count("merge")));
+  EXPECT_LT(static_cast<std::int64_t>(sim.lists().active(2).size()), fine_before);
+  ASSERT_TRUE(sim.hierarchy().check_invariants().empty());
+  // Shedding frame after frame returns to level 0.
+  for (int frame = 5; frame < 60 && subdivided() > 0; ++frame) {
+    impose(sim, 2e-3);
+    adapt.update(sim, frame, events, BudgetRule::Shed);
+  }
+  EXPECT_EQ(subdivided(), 0u);
+  EXPECT_EQ(sim.lists().active(0).size(), meshes[0].points.size());
+}
