@@ -1,5 +1,7 @@
 #include "hierarchy/level_links.hpp"
 
+#include <cmath>
+
 #include <algorithm>
 #include <limits>
 
@@ -115,6 +117,19 @@ std::vector<LevelLinks> build_level_links(const std::vector<HierarchyLevel>& lev
     links[L - 1].dependents.push_row({});
   }
   return links;
+}
+
+int coincident_with_parent(const LevelLinks& links) {
+  int n = 0;
+  for (std::size_t p = 0; p < links.parent_tet.tet.size(); ++p) {
+    if (links.parent_tet.tet[p] < 0) continue;
+    for (double b : links.parent_tet.bary[p])
+      if (std::abs(b - 1.0) < 1e-9) {
+        ++n;
+        break;
+      }
+  }
+  return n;
 }
 
 }  // namespace mrsim

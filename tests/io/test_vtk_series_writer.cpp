@@ -23,13 +23,17 @@
 
 #include "core/error.hpp"
 #include "io/vtk_series_writer.hpp"
+#include "vtk_read_checks.hpp"
 #include "sample_frames.hpp"
 #include "temp_dir.hpp"
 
 namespace mrsim {
 namespace {
 
+using test::expect_scalars;
+using test::expect_vectors;
 using test::kSampleTimes;
+using test::read_vtm;
 using test::SampleLevel;
 
 std::string read_text(const std::filesystem::path& file) {
@@ -60,41 +64,6 @@ void write_three_frames(const std::filesystem::path& dir) {
   }
 }
 
-vtkSmartPointer<vtkMultiBlockDataSet> read_vtm(const std::filesystem::path& file) {
-  auto reader = vtkSmartPointer<vtkXMLMultiBlockDataReader>::New();
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  auto* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutputDataObject(0));
-  return blocks;
-}
-
-void expect_vector_array(vtkPointData* data, const char* name, const std::vector<Vec3>& expected) {
-  vtkDataArray* array = data->GetArray(name);
-  ASSERT_NE(array, nullptr) << name;
-  EXPECT_EQ(array->GetDataType(), VTK_DOUBLE) << name;
-  ASSERT_EQ(array->GetNumberOfComponents(), 3) << name;
-  ASSERT_EQ(array->GetNumberOfTuples(), static_cast<vtkIdType>(expected.size())) << name;
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      ASSERT_EQ(array->GetComponent(static_cast<vtkIdType>(i), c), expected[i][c])
-          << name << " point " << i << " component " << c;
-    }
-  }
-}
-
-template <class T>
-void expect_scalar_array(vtkPointData* data, const char* name, int vtk_type,
-                         const std::vector<T>& expected) {
-  vtkDataArray* array = data->GetArray(name);
-  ASSERT_NE(array, nullptr) << name;
-  EXPECT_EQ(array->GetDataType(), vtk_type) << name;
-  ASSERT_EQ(array->GetNumberOfComponents(), 1) << name;
-  ASSERT_EQ(array->GetNumberOfTuples(), static_cast<vtkIdType>(expected.size())) << name;
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    ASSERT_EQ(array->GetComponent(static_cast<vtkIdType>(i), 0), static_cast<double>(expected[i]))
-        << name << " point " << i;
-  }
-}
 
 void expect_level_grid(vtkUnstructuredGrid* grid, const SampleLevel& level, double time) {
   ASSERT_NE(grid, nullptr);
@@ -118,13 +87,13 @@ void expect_level_grid(vtkUnstructuredGrid* grid, const SampleLevel& level, doub
   }
   vtkPointData* data = grid->GetPointData();
   EXPECT_EQ(data->GetNumberOfArrays(), 7);
-  expect_vector_array(data, "displacement", level.displacement);
-  expect_vector_array(data, "velocity", level.velocity);
-  expect_vector_array(data, "force", level.force);
-  expect_scalar_array(data, "status", VTK_SIGNED_CHAR, level.status);
-  expect_scalar_array(data, "time_level", VTK_INT, level.time_level);
-  expect_scalar_array(data, "criterion", VTK_DOUBLE, level.criterion);
-  expect_scalar_array(data, "mass", VTK_DOUBLE, level.mass);
+  expect_vectors(data, "displacement", level.displacement);
+  expect_vectors(data, "velocity", level.velocity);
+  expect_vectors(data, "force", level.force);
+  expect_scalars(data, "status", VTK_SIGNED_CHAR, level.status);
+  expect_scalars(data, "time_level", VTK_INT, level.time_level);
+  expect_scalars(data, "criterion", VTK_DOUBLE, level.criterion);
+  expect_scalars(data, "mass", VTK_DOUBLE, level.mass);
   vtkDataArray* time_value = grid->GetFieldData()->GetArray("TimeValue");
   ASSERT_NE(time_value, nullptr);
   EXPECT_EQ(time_value->GetComponent(0, 0), time);

@@ -24,6 +24,7 @@
 #include <gtest/gtest.h>
 
 #include "io/vtk_series_writer.hpp"
+#include "vtk_read_checks.hpp"
 #include "sample_frames.hpp"
 #include "sample_tools.hpp"
 #include "temp_dir.hpp"
@@ -31,7 +32,10 @@
 namespace mrsim {
 namespace {
 
+using test::expect_scalars;
+using test::expect_vectors;
 using test::kSampleTimes;
+using test::read_vtm;
 using test::SampleSurface;
 using test::SampleTool;
 
@@ -39,13 +43,6 @@ std::filesystem::path vtm_path(const std::filesystem::path& dir, int frame) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%06d.vtm", frame);
   return dir / "frames" / name;
-}
-
-vtkSmartPointer<vtkMultiBlockDataSet> read_vtm(const std::filesystem::path& file) {
-  auto reader = vtkSmartPointer<vtkXMLMultiBlockDataReader>::New();
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  return vtkMultiBlockDataSet::SafeDownCast(reader->GetOutputDataObject(0));
 }
 
 std::vector<std::string> block_names(vtkMultiBlockDataSet* blocks) {
@@ -72,34 +69,6 @@ std::vector<std::string> piece_files(const std::filesystem::path& vtm) {
   return files;
 }
 
-// Point, cell and field data all derive from vtkFieldData.
-void expect_vectors(vtkFieldData* data, const char* name, const std::vector<Vec3>& expected) {
-  vtkDataArray* array = data->GetArray(name);
-  ASSERT_NE(array, nullptr) << name;
-  EXPECT_EQ(array->GetDataType(), VTK_DOUBLE) << name;
-  ASSERT_EQ(array->GetNumberOfComponents(), 3) << name;
-  ASSERT_EQ(array->GetNumberOfTuples(), static_cast<vtkIdType>(expected.size())) << name;
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      ASSERT_EQ(array->GetComponent(static_cast<vtkIdType>(i), c), expected[i][c])
-          << name << " tuple " << i << " component " << c;
-    }
-  }
-}
-
-template <class T>
-void expect_scalars(vtkFieldData* data, const char* name, int vtk_type,
-                    const std::vector<T>& expected) {
-  vtkDataArray* array = data->GetArray(name);
-  ASSERT_NE(array, nullptr) << name;
-  EXPECT_EQ(array->GetDataType(), vtk_type) << name;
-  ASSERT_EQ(array->GetNumberOfComponents(), 1) << name;
-  ASSERT_EQ(array->GetNumberOfTuples(), static_cast<vtkIdType>(expected.size())) << name;
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    ASSERT_EQ(array->GetComponent(static_cast<vtkIdType>(i), 0), static_cast<double>(expected[i]))
-        << name << " tuple " << i;
-  }
-}
 
 void expect_points(vtkPolyData* block, const std::vector<Vec3>& expected) {
   ASSERT_EQ(block->GetNumberOfPoints(), static_cast<vtkIdType>(expected.size()));

@@ -306,11 +306,61 @@ def test_little_man(binary, source, tmp):
           "the arms keep oscillating after the tools let go")
 
 
+def write_box_vtu(path, n):
+    """A (2n x 2n x n)-cell box of 2 x 2 x 1 cm, Kuhn-split into tets (n even: nested levels)."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid, VTK_TETRA
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
+    nx, ny, nz = 2 * n, 2 * n, n
+    pts = vtkPoints()
+    idx = lambda i, j, k: i + (nx + 1) * (j + (ny + 1) * k)
+    for k in range(nz + 1):
+        for j in range(ny + 1):
+            for i in range(nx + 1):
+                pts.InsertNextPoint(0.02 * i / nx, 0.02 * j / ny, 0.01 * k / nz)
+    grid = vtkUnstructuredGrid()
+    grid.SetPoints(pts)
+    paths = [(1, 3), (1, 5), (2, 3), (2, 6), (4, 5), (4, 6)]
+    for k in range(nz):
+        for j in range(ny):
+            for i in range(nx):
+                v = [idx(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)) for c in range(8)]
+                for a, b in paths:
+                    t = [v[0], v[a], v[b], v[7]]
+                    p = [np.array(pts.GetPoint(q)) for q in t]
+                    if np.dot(p[1] - p[0], np.cross(p[2] - p[0], p[3] - p[0])) < 0:
+                        t[2], t[3] = t[3], t[2]
+                    grid.InsertNextCell(VTK_TETRA, 4, t)
+    w = vtkXMLUnstructuredGridWriter()
+    w.SetFileName(path)
+    w.SetInputData(grid)
+    w.Write()
+
+
+def test_shared_points_warning(binary, tmp):
+    """Nested levels (sharing many points) get a warning about the energy couplings' step."""
+    for n in (2, 4):
+        write_box_vtu(os.path.join(tmp, "nested_%d.vtu" % n), n)
+    path = os.path.join(tmp, "nested.yaml")
+    with open(path, "w") as f:
+        f.write("name: nested\nobject:\n  levels:\n    - mesh: nested_2.vtu\n    - mesh: nested_4.vtu\n"
+                "material: {youngs_modulus: 1.0e+4, poisson_ratio: 0.3, density: 1000}\n"
+                "fixed:\n  - box: {min: [-1, -1, -1], max: [1, 1, 1.0e-4]}\n"
+                "time: {frame_dt: 0.01, duration: 0.01}\n")
+    r = cli.run(binary, "run", path, "-o", os.path.join(tmp, "nested_out"))
+    check(r.returncode == 0 and "shares 75 of its 405 points with level 0" in r.stderr,
+          "nested levels are warned about: " + r.stderr.strip()[-200:])
+    r = cli.run(binary, "run", path, "-o", os.path.join(tmp, "nested_force"),
+                "--set", "adaptivity.space.coupling=force")
+    check(r.returncode == 0 and "shares" not in r.stderr, "not with the force coupling")
+
+
 def main():
     args = cli.parse_args()
     if args is None:
         return 77
     with tempfile.TemporaryDirectory() as tmp:
+        test_shared_points_warning(args.binary, tmp)
         test_liver_probe(args.binary, args.source, tmp)
         test_time_levels_rate(args.binary, args.source, tmp)
         test_csv_trajectory(args.binary, args.source, tmp)
