@@ -102,8 +102,9 @@ def block_arrays(vtm, block):
 
 
 def test_threads_bit_identical(binary, scenario, tmp, duration, frames, sets=(), tag=""):
-    """Same outputs, bit for bit, with 1 and 2 threads (every level's VTU block, every log.h5
-    dataset but wall times), the threaded loops forced on whatever their size."""
+    """Same outputs, bit for bit, with 1 and 2 threads (every VTU block: the levels, and the
+    skin and tools when there are tools; every log.h5 dataset but wall times), the threaded
+    loops forced on whatever their size."""
     env = dict(os.environ, MRSIM_PARALLEL_THRESHOLD="1")
     name = os.path.splitext(os.path.basename(scenario))[0] + tag
     extra = [a for s in sets for a in ("--set", s)]
@@ -128,13 +129,14 @@ def test_threads_bit_identical(binary, scenario, tmp, duration, frames, sets=(),
                 same = a[n].shape == b[n].shape and va.tobytes() == vb.tobytes()
             check(same, "%s: log.h5 /%s bit-identical for 1 and 2 threads" % (name, n))
         levels = a["/frames/active"].shape[1]
+        blocks = levels + (2 if "tool" in a else 0)  # then the surface and tool blocks
     for k in frames:
-        for level in range(levels):
+        for level in range(blocks):
             fa = block_arrays(os.path.join(outs[0], "frames", "frame_%06d.vtm" % k), level)
             fb = block_arrays(os.path.join(outs[1], "frames", "frame_%06d.vtm" % k), level)
             for array in fa:
                 check(fa[array].tobytes() == fb[array].tobytes(),
-                      "%s: frame %d level %d array %s bit-identical for 1 and 2 threads"
+                      "%s: frame %d block %d array %s bit-identical for 1 and 2 threads"
                       % (name, k, level, array))
 
 

@@ -363,6 +363,12 @@ def main():
         test_shared_points_warning(args.binary, tmp)
         test_liver_probe(args.binary, args.source, tmp)
         test_time_levels_rate(args.binary, args.source, tmp)
+        probe = os.path.join(args.source, "scenarios", "liver_probe.yaml")
+        cli.test_threads_bit_identical(args.binary, probe, tmp, 0.3, (5, 15))
+        cli.test_threads_bit_identical(
+            args.binary, probe, tmp, 0.3, (5, 15), tag="_time_sv",
+            sets=["adaptivity.time.enabled=true", "time.substeps=1024",
+                  "time.integrator=stoermer_verlet"])
         test_csv_trajectory(args.binary, args.source, tmp)
         test_skin_surface(args.binary, args.source, tmp)
         test_budget(args.binary, args.source, tmp)
