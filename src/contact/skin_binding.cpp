@@ -29,16 +29,13 @@ SkinBinding bind_skin(const Skin& skin, const std::vector<const TetMesh*>& level
     const TetLocator locator(*mesh);
     std::vector<int> tet(n);
     std::vector<Bary> bary(n);
-    std::vector<double> distance(n);
     for (std::size_t s = 0; s < n; ++s) {
       const TetLocation at = locator.locate(skin.rest[s]);
       tet[s] = at.tet;
       bary[s] = snapped(at.bary);
-      distance[s] = at.distance;
     }
     b.tet.push_back(std::move(tet));
     b.bary.push_back(std::move(bary));
-    b.distance.push_back(std::move(distance));
   }
   return b;
 }

@@ -13,7 +13,6 @@ namespace mrsim {
 struct SkinBinding {
   std::vector<std::vector<int>> tet;    // [level][skin vertex]
   std::vector<std::vector<Bary>> bary;  // [level][skin vertex], Σ = 1
-  std::vector<std::vector<double>> distance;  // [level][skin vertex] m outside the level, 0 inside
 };
 
 SkinBinding bind_skin(const Skin& skin, const std::vector<const TetMesh*>& levels);

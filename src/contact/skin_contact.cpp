@@ -1,6 +1,7 @@
 #include "contact/skin_contact.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace mrsim {
@@ -40,6 +41,7 @@ SkinContact::SkinContact(Skin skin, SkinBinding binding, std::vector<Tool> tools
   candidates_.resize(T);
   vertex_force_.assign(skin_.rest.size(), Vec3::Zero());
   tool_force_.assign(T, Vec3::Zero());
+  pose_.resize(T);
   max_depth_.assign(T, 0.0);
   contacts_.assign(T, 0);
   samples_.resize(T);
@@ -50,28 +52,21 @@ void SkinContact::remap(const Hierarchy& h,
   map_.build(h, binding_, free_point);
 }
 
-// A skin vertex is near tool k over [t0, t1] when, at its current position, it is within the
+// A skin vertex is near tool k over [t0, t1] when, at its current position x, it is within the
 // tool's bounding ball (plus a margin for the skin's own motion) of the tool's path: the path is
 // sampled, and the ball about the tool frame's origin contains the shape in any orientation.
-void SkinContact::near_tool(int k, double t0, double t1, const std::vector<LevelFields>& fields,
-                            std::vector<int>& out) const {
-  const int n = map_.size();
-  double speed = 0;
-  std::vector<Vec3> x(n);
-  for (int s = 0; s < n; ++s) {
-    x[s] = skin_.rest[s] + map_.value(s, fields, false);
-    speed = std::max(speed, map_.value(s, fields, true).norm());
-  }
+void SkinContact::near_tool(int k, double t0, double t1, const std::vector<Vec3>& x,
+                            double speed, std::vector<int>& out) const {
   const Tool& tool = tools_[k];
   const double reach = bounding_radius(tool.shape) * 1.05 + 2.0 * speed * (t1 - t0);
-  std::vector<Vec3> path;
+  std::array<Vec3, kSweepSamples + 1> path;
   for (int i = 0; i <= kSweepSamples; ++i)
-    path.push_back(tool.trajectory.pose(t0 + (t1 - t0) * i / kSweepSamples).position);
+    path[i] = tool.trajectory.pose(t0 + (t1 - t0) * i / kSweepSamples).position;
   // Sampling the path misses at most the chord of one interval: add the longest one.
   double chord = 0;
   for (int i = 1; i <= kSweepSamples; ++i) chord = std::max(chord, (path[i] - path[i - 1]).norm());
   out.clear();
-  for (int s = 0; s < n; ++s) {
+  for (int s = 0; s < static_cast<int>(x.size()); ++s) {
     double d = (x[s] - path[0]).norm();
     for (int i = 1; i <= kSweepSamples && d > reach + chord; ++i)
       d = std::min(d, distance_to_segment(x[s], path[i - 1], path[i]));
@@ -79,8 +74,22 @@ void SkinContact::near_tool(int k, double t0, double t1, const std::vector<Level
   }
 }
 
+// The skin's positions and largest speed, once for all tools.
+void SkinContact::near_tools(double t0, double t1, const std::vector<LevelFields>& fields,
+                             std::vector<std::vector<int>>& out) const {
+  const int n = map_.size();
+  double speed = 0;
+  std::vector<Vec3> x(n);
+  for (int s = 0; s < n; ++s) {
+    x[s] = skin_.rest[s] + map_.value(s, fields, false);
+    speed = std::max(speed, map_.value(s, fields, true).norm());
+  }
+  out.resize(tools_.size());
+  for (int k = 0; k < num_tools(); ++k) near_tool(k, t0, t1, x, speed, out[k]);
+}
+
 void SkinContact::begin_frame(double t0, double t1, const std::vector<LevelFields>& fields) {
-  for (int k = 0; k < num_tools(); ++k) near_tool(k, t0, t1, fields, candidates_[k]);
+  near_tools(t0, t1, fields, candidates_);
 }
 
 Vec3 SkinContact::penalty(int k, const ToolPose& pose, int s,
@@ -116,12 +125,12 @@ void SkinContact::clear(const std::vector<Vec3*>& external) {
 
 Vec3 SkinContact::apply(double t, const std::vector<LevelFields>& fields,
                         const std::vector<Vec3*>& external) {
+  applied_at_ = t;
   for (int s : forced_) vertex_force_[s].setZero();
   forced_.clear();
   Vec3 support = Vec3::Zero();
-  body_force_.setZero();
   for (std::size_t k = 0; k < tools_.size(); ++k) {
-    const ToolPose pose = tools_[k].trajectory.pose(t);
+    const ToolPose& pose = pose_[k] = tools_[k].trajectory.pose(t);
     tool_force_[k].setZero();
     max_depth_[k] = 0;
     contacts_[k] = 0;
@@ -134,18 +143,18 @@ Vec3 SkinContact::apply(double t, const std::vector<LevelFields>& fields,
       if (vertex_force_[s].isZero()) forced_.push_back(s);
       vertex_force_[s] += f;
       tool_force_[k] -= f;
-      body_force_ += f;
-      for (const ActiveTerm* a = map_.begin(s); a != map_.end(s); ++a) touch(external, *a, f, support);
+      for (const ActiveTerm* a = map_.begin(s); a != map_.end(s); ++a)
+        touch(external, *a, f, support);
     }
   }
   return support;
 }
 
-void SkinContact::record_sample(double t) {
+void SkinContact::record_sample() {
   for (std::size_t k = 0; k < tools_.size(); ++k) {
-    const ToolPose pose = tools_[k].trajectory.pose(t);
+    const ToolPose& pose = pose_[k];
     ToolSampleBuffer& b = samples_[k];
-    b.time.push_back(t);
+    b.time.push_back(applied_at_);
     b.position.push_back(pose.position);
     const Quat& q = pose.orientation;
     b.orientation.push_back({q.w(), q.x(), q.y(), q.z()});

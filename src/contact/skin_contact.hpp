@@ -39,17 +39,18 @@ class SkinContact {
   void remap(const Hierarchy& h, const std::vector<const std::vector<std::uint8_t>*>& free_point);
   /// Broad phase for the frame [t0, t1] at the current state.
   void begin_frame(double t0, double t1, const std::vector<LevelFields>& fields);
-  /// Skin vertices that tool k may reach during [t0, t1] (sorted; O(skin vertices)).
-  void near_tool(int k, double t0, double t1, const std::vector<LevelFields>& fields,
-                 std::vector<int>& out) const;
+  /// For every tool k, the skin vertices it may reach during [t0, t1] (out[k], sorted;
+  /// O(skin vertices × tools)).
+  void near_tools(double t0, double t1, const std::vector<LevelFields>& fields,
+                  std::vector<std::vector<int>>& out) const;
   /// Removes the forces of the last apply() from `external` (per level, N).
   void clear(const std::vector<Vec3*>& external);
   /// Contact forces at time t for the current state, added to the active points' `external`
   /// (call clear() first); what reaches fixed points is returned (the support's share).
   /// O(candidates × row length), no allocation once the lists have grown.
   Vec3 apply(double t, const std::vector<LevelFields>& fields, const std::vector<Vec3*>& external);
-  /// Appends one sample per tool for the forces of the last apply().
-  void record_sample(double t);
+  /// Appends one sample per tool: the time, pose and forces of the last apply().
+  void record_sample();
 
   int num_tools() const { return static_cast<int>(tools_.size()); }
   const Tool& tool(int k) const { return tools_[k]; }
@@ -59,8 +60,6 @@ class SkinContact {
   const Vec3& tool_force(int k) const { return tool_force_[k]; }
   /// Largest depth of a skin vertex inside tool k at the last apply() (m, 0 when none).
   double max_depth(int k) const { return max_depth_[k]; }
-  /// Σ of the contact forces handed to the body at the last apply(), support included (N).
-  Vec3 body_force() const { return body_force_; }
 
   const Skin& skin() const { return skin_; }
   const SkinMap& map() const { return map_; }
@@ -69,6 +68,8 @@ class SkinContact {
 
  private:
   void touch(const std::vector<Vec3*>& external, const ActiveTerm& t, const Vec3& f, Vec3& support);
+  void near_tool(int k, double t0, double t1, const std::vector<Vec3>& x, double speed,
+                 std::vector<int>& out) const;
   Vec3 penalty(int k, const ToolPose& pose, int s, const std::vector<LevelFields>& fields,
                double& depth) const;
 
@@ -82,10 +83,11 @@ class SkinContact {
   std::vector<int> forced_;                          // skin vertices with a force
   std::vector<Vec3> vertex_force_;
   std::vector<Vec3> tool_force_;
+  std::vector<ToolPose> pose_;  // per tool, at the last apply()
+  double applied_at_ = 0;       // time of the last apply() (s)
   std::vector<double> max_depth_;
   std::vector<std::int32_t> contacts_;
   std::vector<ToolSampleBuffer> samples_;
-  Vec3 body_force_ = Vec3::Zero();
 };
 
 }  // namespace mrsim

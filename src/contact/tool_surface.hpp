@@ -9,7 +9,8 @@ namespace mrsim {
 
 struct TriangleSurface {
   std::vector<Vec3> points;
-  std::vector<std::array<int, 3>> triangles;  // outward-oriented (counter-clockwise seen from outside)
+  // Outward-oriented: counter-clockwise seen from outside.
+  std::vector<std::array<int, 3>> triangles;
 };
 
 /// Closed, outward-oriented, about `segments` facets around the axis (>= 8).

@@ -19,7 +19,8 @@ void append_active_row(const Hierarchy& h,
   const int source = finer ? l + 1 : l - 1;
   const Tet& t = h.level(source).mesh->tets[e.tet[p]];
   for (int k = 0; k < 4; ++k)
-    if (e.bary[p][k] != 0) append_active_row(h, free_point, source, t[k], weight * e.bary[p][k], out);
+    if (e.bary[p][k] != 0)
+      append_active_row(h, free_point, source, t[k], weight * e.bary[p][k], out);
 }
 
 }  // namespace mrsim

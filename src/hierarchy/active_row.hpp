@@ -20,7 +20,8 @@ struct ActiveTerm {
 
 /// Appends weight × (row of point p of level l) to `out`; `free_point[l][p]` is 0 for
 /// Dirichlet points. Terms are not merged (the same active point may appear several times).
-void append_active_row(const Hierarchy& h, const std::vector<const std::vector<std::uint8_t>*>& free_point,
-                       int l, int p, double weight, std::vector<ActiveTerm>& out);
+void append_active_row(const Hierarchy& h,
+                       const std::vector<const std::vector<std::uint8_t>*>& free_point, int l,
+                       int p, double weight, std::vector<ActiveTerm>& out);
 
 }  // namespace mrsim

@@ -172,13 +172,13 @@ void HierarchicalSimulation::run_w_cycle(std::vector<TimeLevelChange>& changes) 
       if (contact_ && s.tick % haptic == 0) {  // nobody kicked: the skin moves on, sampled
         drift_all(drifted, s.tick, frame_start, tick);
         drifted = s.tick;
-        contact_->record_sample(clock_);
+        contact_->record_sample();
       }
       continue;
     }
     drift_all(drifted, s.tick, frame_start, tick);
     drifted = s.tick;
-    if (contact_) contact_->record_sample(clock_);
+    if (contact_) contact_->record_sample();
     stepper_->kick_step(tick);
     ++steps_;
     ta.after_step(s, changes);
@@ -207,7 +207,7 @@ void HierarchicalSimulation::advance(int steps) {
     stepper_->step(dt_);
     time_ = clock_;
     ++steps_;
-    if (contact_) contact_->record_sample(time_);
+    if (contact_) contact_->record_sample();
   }
 }
 
@@ -234,13 +234,12 @@ void HierarchicalSimulation::contact_region(double lookahead,
                                             std::vector<std::pair<int, int>>& out) const {
   out.clear();
   if (!contact_) return;
-  std::vector<int> near;
-  for (int k = 0; k < contact_->num_tools(); ++k) {
-    contact_->near_tool(k, time_, time_ + lookahead, fields_, near);
-    for (int s : near)
+  std::vector<std::vector<int>> near;
+  contact_->near_tools(time_, time_ + lookahead, fields_, near);
+  for (const std::vector<int>& vertices : near)
+    for (int s : vertices)
       for (const ActiveTerm* t = contact_->map().begin(s); t != contact_->map().end(s); ++t)
         if (t->level >= 0) out.emplace_back(t->level, t->point);
-  }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
 }
@@ -271,10 +270,13 @@ void HierarchicalSimulation::after_positions() {
 
 // A force on point p of level l reaches the active points that move p, with the weights that
 // move it (hierarchy/active_row.hpp; level -1: held by the support).
-void HierarchicalSimulation::deposit(int load, int l, int p, const Vec3& force) {
-  std::vector<ActiveTerm> row;
-  append_active_row(*hierarchy_, free_points(), l, p, 1.0, row);
-  for (const ActiveTerm& t : row) load_targets_.push_back({load, t.level, t.point, t.weight * force});
+void HierarchicalSimulation::deposit(int load, int l, int p, const Vec3& force,
+                                     const std::vector<const std::vector<std::uint8_t>*>& free,
+                                     std::vector<ActiveTerm>& row) {
+  row.clear();
+  append_active_row(*hierarchy_, free, l, p, 1.0, row);
+  for (const ActiveTerm& t : row)
+    load_targets_.push_back({load, t.level, t.point, t.weight * force});
 }
 
 // Once per topology change: where every nodal load lands, merged per (load, level, point).
@@ -283,9 +285,11 @@ void HierarchicalSimulation::resolve_loads() {
     if (target.level >= 0) external_[target.level][target.point].setZero();
   load_targets_.clear();
   const int fine = num_levels() - 1;
+  const auto free = free_points();
+  std::vector<ActiveTerm> row;
   for (int k = 0; k < static_cast<int>(loads_.size()); ++k)
     for (size_t i = 0; i < loads_[k].finest.points.size(); ++i)
-      deposit(k, fine, loads_[k].finest.points[i], loads_[k].finest.force[i]);
+      deposit(k, fine, loads_[k].finest.points[i], loads_[k].finest.force[i], free, row);
   auto key = [](const LoadTarget& a) { return std::tuple(a.load, a.level, a.point); };
   std::stable_sort(load_targets_.begin(), load_targets_.end(),
                    [&](const LoadTarget& a, const LoadTarget& b) { return key(a) < key(b); });

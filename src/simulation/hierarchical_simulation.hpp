@@ -113,7 +113,9 @@ class HierarchicalSimulation {
   Vec3 fresh_value(int l, int q, bool velocity) const;
   Vec3 from_parent(int l, int q, bool velocity) const;
   void resolve_loads();
-  void deposit(int load, int l, int p, const Vec3& force);
+  void deposit(int load, int l, int p, const Vec3& force,
+               const std::vector<const std::vector<std::uint8_t>*>& free,
+               std::vector<ActiveTerm>& row);
   void update_external(double t);
   void begin_contact_frame(double duration);
   void remap_skin();

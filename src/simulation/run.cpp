@@ -312,7 +312,6 @@ nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& si
 
 }  // namespace
 
-// Every value computed from the meshes, written back into the scenario (and `resolved`).
 Scenario check_scenario_inputs(const Scenario& sc) {
   const std::vector<TetMesh> meshes = load_meshes(sc);
   // Fixed regions and loads select something; tool trajectories and the skin read.
@@ -358,7 +357,8 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
       writer.close();
       sum.frames = st.frames_done;
       sum.wall_time = seconds_since(t0);
-      write_json_file(sc.output.dir / "summary.json", summary_json(sc, sim, st, sum, writer.peak_tool_force()));
+      write_json_file(sc.output.dir / "summary.json",
+                      summary_json(sc, sim, st, sum, writer.peak_tool_force()));
       throw RunError(st.message);
     }
     for (const TimeLevelChange& c : changes)
@@ -383,7 +383,8 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
   writer.close();
   sum.frames = st.frames_done;
   sum.wall_time = seconds_since(t0);
-  write_json_file(sc.output.dir / "summary.json", summary_json(sc, sim, st, sum, writer.peak_tool_force()));
+  write_json_file(sc.output.dir / "summary.json",
+                  summary_json(sc, sim, st, sum, writer.peak_tool_force()));
   return sum;
 }
 

@@ -48,6 +48,14 @@ void SpaceAdaptivity::mark_contact_region(const HierarchicalSimulation& sim) {
   for (const auto& [l, p] : region_) contact_[l][p] = 1;
 }
 
+// The largest criterion among the children of subdivided point p of level l.
+double SpaceAdaptivity::worst_child(const HierarchicalSimulation& sim, int l, int p) const {
+  double worst = 0;
+  for (int c : sim.hierarchy().links(l).children.row(p))
+    worst = std::max(worst, criterion_[l + 1][c]);
+  return worst;
+}
+
 // A subdivided point stays subdivided while a point it activated moves skin near a tool.
 bool SpaceAdaptivity::holds_contact(const HierarchicalSimulation& sim, int l, int p) const {
   for (int q : sim.hierarchy().links(l).active_set.row(p))
@@ -119,9 +127,7 @@ void SpaceAdaptivity::merge_calm(HierarchicalSimulation& sim, int frame,
     for (int p : sim.lists().ghost_sub(l)) {  // sorted: so is `calm`
       if (split_frame_[l][p] >= 0 && frame - split_frame_[l][p] < s_.min_dwell_frames) continue;
       if (!sim.hierarchy().can_merge(l, p) || holds_contact(sim, l, p)) continue;
-      double worst = 0;
-      for (int c : sim.hierarchy().links(l).children.row(p)) worst = std::max(worst, criterion_[l + 1][c]);
-      if (worst < s_.coarsen_below) calm.push_back(p);
+      if (worst_child(sim, l, p) < s_.coarsen_below) calm.push_back(p);
     }
     auto staying = [&](int q) {
       return sim.hierarchy().subdivided(l, q) && !std::binary_search(calm.begin(), calm.end(), q);
@@ -146,9 +152,7 @@ void SpaceAdaptivity::shed(HierarchicalSimulation& sim, int frame,
   for (int l = 0; l + 1 < sim.num_levels(); ++l)
     for (int p : sim.lists().ghost_sub(l)) {
       if (!sim.hierarchy().can_merge(l, p)) continue;
-      double worst = 0;
-      for (int c : sim.hierarchy().links(l).children.row(p)) worst = std::max(worst, criterion_[l + 1][c]);
-      calmest.emplace_back(worst, l, p);
+      calmest.emplace_back(worst_child(sim, l, p), l, p);
     }
   std::sort(calmest.begin(), calmest.end());
   const std::size_t n = calmest.empty() ? 0 : std::max<std::size_t>(1, calmest.size() / 4);

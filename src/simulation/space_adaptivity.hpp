@@ -72,6 +72,7 @@ class SpaceAdaptivity {
   std::vector<std::pair<int, int>> region_;          // (level, point) with contact_ set
   void mark_contact_region(const HierarchicalSimulation& sim);
   bool holds_contact(const HierarchicalSimulation& sim, int l, int p) const;
+  double worst_child(const HierarchicalSimulation& sim, int l, int p) const;
 };
 
 }  // namespace mrsim
