@@ -7,6 +7,7 @@
 
 #include "mesh/box_mesh.hpp"
 #include "simulation/hierarchical_simulation.hpp"
+#include "simulation/stable_step.hpp"
 
 namespace mrsim::testing {
 
@@ -57,6 +58,11 @@ struct IndentedBlock {
     return s;
   }
 };
+
+/// Half the P-wave Courant estimate of the mesh (validation.md §2.7).
+inline double courant_dt(const TetMesh& mesh, const MaterialLaw& law) {
+  return 0.5 * shortest_edge(mesh) / std::sqrt((law.lambda + 2 * law.mu) / law.density);
+}
 
 /// A tool moving straight down from `start` to `end` (m, z of the tool frame's origin) over
 /// [0, t_end] s, then holding.

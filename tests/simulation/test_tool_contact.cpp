@@ -1,6 +1,6 @@
-// Rigid tools pushing the skin (issue 6, method.md §6.2; validation.md §2.9): Hertz and
-// Boussinesq on a block graded under the tool, action-reaction and virtual work through the
-// skin map, refinement under a sliding tool and the force signal across level changes.
+// Rigid tools pushing the skin (issue 6, method.md §6.2): action-reaction and virtual work
+// through the skin map, refinement under a sliding tool and the force signal across level
+// changes. Hertz and Boussinesq are in tests/validation/test_indentation.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,96 +17,8 @@ namespace mrsim {
 namespace {
 
 using testing::IndentedBlock;
+using testing::courant_dt;
 using testing::vertical_tool;
-
-struct Sample {
-  double depth;        // m, the tool's depth below the undeformed surface
-  double penetration;  // m, deepest skin vertex inside the tool
-  double force;        // N, upward force on the tool
-};
-
-double courant_dt(const TetMesh& mesh, const MaterialLaw& law) {
-  return 0.5 * shortest_edge(mesh) / std::sqrt((law.lambda + 2 * law.mu) / law.density);
-}
-
-// Runs to t_end, sampling every `every` steps while the tool is below the surface (its working
-// end `tip` m below the tool frame's origin).
-std::vector<Sample> indent(HierarchicalSimulation& sim, double dt, double t_end, int every,
-                           double tip) {
-  std::vector<Sample> out;
-  const int steps = static_cast<int>(std::lround(t_end / dt));
-  for (int s = 0; s < steps; s += every) {
-    sim.advance(every);
-    const SkinContact& c = *sim.contact();
-    const double depth = -(c.tool(0).trajectory.pose(sim.time()).position.z() - tip);
-    if (depth > 0) out.push_back({depth, c.max_depth(0), c.tool_force(0).z()});
-  }
-  return out;
-}
-
-// Least-squares slope of log F against log d over the samples with d in [lo, hi].
-double log_slope(const std::vector<Sample>& samples, double lo, double hi) {
-  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (const Sample& s : samples)
-    if (s.depth >= lo && s.depth <= hi && s.force > 0) {
-      const double x = std::log(s.depth), y = std::log(s.force);
-      n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
-    }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
-// Sphere R = 5 mm into a 40 x 40 x 20 mm block (E = 10 kPa, nu = 0.3) to 0.5 mm over 0.5 s,
-// cells of 0.4 mm under the tool (contact radius 1.0-1.6 mm: 2.5-4 cells), automatic penalty.
-TEST(ToolContact, HertzSphereForceGrowsAsDepthToTheThreeHalves) {
-  const IndentedBlock block;
-  const TetMesh mesh = block.mesh();
-  const double R = 5e-3, d_max = 5e-4, t_load = 0.5;
-  HierarchySetup s = block.setup(mesh, vertical_tool({ToolShapeKind::Sphere, R, 0}, R + 2e-5,
-                                                     R - d_max, t_load));
-  s.dt = courant_dt(mesh, s.law);
-  HierarchicalSimulation sim({&mesh}, s);
-  const std::vector<Sample> samples = indent(sim, s.dt, t_load, 50, R);
-  ASSERT_GT(samples.size(), 50u);
-  const double slope = log_slope(samples, 2e-4, 5e-4);
-  double worst = 0, deepest = 0;
-  for (const Sample& x : samples) {
-    deepest = std::max(deepest, x.penetration);
-    if (x.depth < 2.5e-4) continue;
-    const double hertz = 4.0 / 3.0 * block.e_star() * std::sqrt(R) * std::pow(x.depth, 1.5);
-    worst = std::max(worst, std::abs(x.force / hertz - 1));
-  }
-  const Sample& last = samples.back();
-  const double dent = last.depth - last.penetration;
-  std::printf("Hertz: slope %.3f on d in [0.2, 0.5] mm; F/F_hertz(d) worst %.3f for d >= 0.25 mm; "
-              "at d = %.3f mm: F = %.4e N; against the dent made (d - penetration = %.3f mm): "
-              "%.3f; deepest penetration %.4f mm = %.2f h0\n",
-              slope, 1 + worst, last.depth * 1e3, last.force, dent * 1e3,
-              last.force / (4.0 / 3.0 * block.e_star() * std::sqrt(R) * std::pow(dent, 1.5)),
-              deepest * 1e3, deepest / block.h0);
-  EXPECT_NEAR(slope, 1.5, 0.15);
-  EXPECT_LT(worst, 0.15);
-  EXPECT_LT(deepest, 0.25 * block.h0);  // the penalty's penetration: a fraction of a cell
-}
-
-// Flat punch a = 2 mm to d = 0.1 mm over 0.3 s, held 0.1 s: F = 2 a E* d within 15 %.
-TEST(ToolContact, FlatPunchForceIsWithinFifteenPercentOfBoussinesq) {
-  const IndentedBlock block;
-  const TetMesh mesh = block.mesh();
-  const double a = 2e-3, d = 1e-4, t_load = 0.3, t_end = 0.4;
-  HierarchySetup s = block.setup(
-      mesh, vertical_tool({ToolShapeKind::FlatCylinder, a, 5e-3}, 2e-5, -d, t_load));
-  s.dt = courant_dt(mesh, s.law);
-  HierarchicalSimulation sim({&mesh}, s);
-  const std::vector<Sample> samples = indent(sim, s.dt, t_end, 50, 0.0);
-  const Sample& last = samples.back();
-  const double boussinesq = 2 * a * block.e_star() * d;
-  std::printf("Boussinesq: F = %.4e N, 2 a E* d = %.4e N, ratio %.3f; penetration %.4f mm; "
-              "against the dent made: %.3f\n",
-              last.force, boussinesq, last.force / boussinesq, last.penetration * 1e3,
-              last.force / (2 * a * block.e_star() * (d - last.penetration)));
-  EXPECT_NEAR(last.force / boussinesq, 1.0, 0.15);
-  EXPECT_LT(last.penetration, 0.25 * block.h0);
-}
 
 // Three independent box meshes (4, 2.2, 1.2 mm cells) of a 20 x 20 x 10 mm block; a sphere
 // slides across at 1 mm depth so that regions under it split ahead and merge behind it.
