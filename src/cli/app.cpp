@@ -6,6 +6,7 @@
 #include <iostream>
 #include <new>
 
+#include "cli/compare_command.hpp"
 #include "cli/mesh_command.hpp"
 #include "cli/progress_reporter.hpp"
 #include "core/error.hpp"
@@ -81,6 +82,7 @@ int run_cli(int argc, char** argv) {
       "check", "Validate a scenario and its meshes; print the resolved scenario");
   add_scenario_args(check, check_args);
   const MeshCommand mesh = add_mesh_command(app);
+  const CompareCommand compare = add_compare_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -90,6 +92,7 @@ int run_cli(int argc, char** argv) {
   try {
     if (*run) return command_run(run_args);
     if (*mesh.command) return mesh.run();
+    if (*compare.command) return compare.run();
     return command_check(check_args);
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << '\n';

@@ -51,7 +51,7 @@ Skin boundary_skin(const TetMesh& mesh) {
 }
 
 Skin surface_skin(std::vector<Vec3> points, std::vector<std::array<int, 3>> triangles) {
-  Skin s{std::move(points), std::move(triangles), {}};
+  Skin s{std::move(points), std::move(triangles), {}, {}};
   s.area = vertex_areas(s);
   s.edge = mean_edges(s);
   return s;

@@ -1,0 +1,15 @@
+#include "compare/summary_diff.hpp"
+
+namespace mrsim {
+
+bool is_ignored_summary_key(const std::string& key) {
+  return key.find("wall") != std::string::npos || key == "mrsim_version" || key == "git_revision";
+}
+
+JsonDiff diff_summaries(const nlohmann::json& a, const nlohmann::json& b, const Tolerance& tolerance) {
+  return diff_json(a, b, tolerance, [](const std::string&, const std::string& key) {
+    return is_ignored_summary_key(key);
+  });
+}
+
+}  // namespace mrsim
