@@ -22,6 +22,14 @@ import sys
 import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
+# Sections in the order of validation.md (§2.3 statics and modes, §2.8 damping, §2.4 waves,
+# §2.5 compression, §2.6 free body, §2.9 tools), then the method's own claim; others follow.
+# Curves named like these are references (dashed); the others are measured (solid).
+REFERENCE_WORDS = ("reference", "calculix", "hertz", "boussinesq", "static", "analytic",
+                   "predict", "exact")
+GROUP_ORDER = ["Beam", "Beam levels: first bending frequency", "Damping", "Waves",
+               "Uniaxial compression (patch test)", "Free body", "Indentation",
+               "Adaptive vs uniform"]
 
 
 def load_records(folder):
@@ -82,7 +90,7 @@ def plot(folder, record, png):
     xs = [row[0] for row in data]
     for c in range(1, len(header)):
         ys = [row[c] for row in data]
-        reference = not header[c].startswith("mrsim")
+        reference = any(w in header[c].lower() for w in REFERENCE_WORDS)
         style = dict(linestyle="--", linewidth=1.2) if reference else dict(linewidth=1.5)
         if series.get("kind") == "loglog":
             pts = [(x, y) for x, y in zip(xs, ys) if x > 0 and y > 0]
@@ -129,7 +137,7 @@ def write_report(records, folder, out_md, figures):
     ]
     if failed:
         lines += [f"**Outside their band:** {', '.join(failed)}.", ""]
-    groups = []
+    groups = [g for g in GROUP_ORDER if any(r["group"] == g for r in records)]
     for r in records:
         if r["group"] not in groups:
             groups.append(r["group"])

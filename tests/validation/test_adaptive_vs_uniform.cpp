@@ -1,0 +1,226 @@
+// Adaptive multiresolution against the finest level alone: scenarios/beam_adaptive.yaml (the
+// three bundled beam levels, Laplacian-criterion splits and merges, energy coupling, ψ = 2),
+// gravity released at t = 0, against beam_L2 simulated alone with the same material, supports
+// and step. Compared: the tip deflection (mean uz of the finest level's points at x = L; the
+// adaptive run's finest level holds interpolated values where it is inactive, fill_inactive).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "mesh/mesh_reader.hpp"
+#include "scenario/scenario.hpp"
+#include "simulation/beam_fixture.hpp"
+#include "simulation/level_setup_from_scenario.hpp"
+#include "simulation/space_adaptivity.hpp"
+#include "validation/modal_measure.hpp"
+#include "validation/validation_record.hpp"
+
+using namespace mrsim;
+using namespace mrsim::testing;
+
+namespace {
+
+constexpr int kChunks = 16;  // tip samples per display frame (64 steps apart)
+
+struct Curves {
+  std::vector<double> t, adaptive, uniform;
+  std::size_t max_fine_active = 0, fine_points = 0, fine_tets = 0;
+  std::size_t max_total_active = 0;
+  int splits = 0, merges = 0;
+  double dt = 0;
+};
+
+double tip(const PointState& s, const TetMesh& mesh) {
+  double sum = 0;
+  int n = 0;
+  for (size_t i = 0; i < mesh.points.size(); ++i)
+    if (mesh.points[i].x() > kBeamL - 1e-9) {
+      sum -= s.u[i].z();
+      ++n;
+    }
+  return sum / n;
+}
+
+Scenario beam_adaptive(const std::vector<std::string>& overrides) {
+  return load_scenario(std::filesystem::path(MRSIM_SOURCE_DIR) / "scenarios" / "beam_adaptive.yaml",
+                       overrides);
+}
+
+// The scenario as `mrsim run` integrates it (run.cpp: advance a frame, then split/merge at the
+// frame boundary), sampled kChunks times per frame; the finest level alone alongside.
+Curves run_both(const Scenario& sc) {
+  std::vector<TetMesh> meshes;
+  for (const LevelSpec& level : sc.levels) meshes.push_back(read_tet_mesh(level.mesh, sc.units));
+  const std::vector<const TetMesh*> ptrs = {&meshes[0], &meshes[1], &meshes[2]};
+  const HierarchySetup setup = hierarchy_setup(sc, ptrs);
+  HierarchicalSimulation sim(ptrs, setup);
+  SpaceAdaptivity adapt(space_settings(sc), sim);
+  LevelSetup alone;
+  alone.law = setup.law;
+  alone.gravity = setup.gravity;
+  alone.integrator = setup.integrator;
+  alone.dt = setup.dt;
+  alone.fixed = setup.fixed[2];  // the scenario's support, selected on the finest mesh
+  LevelSimulation uniform(meshes[2], alone);
+
+  Curves c;
+  c.dt = setup.dt;
+  c.fine_points = meshes[2].points.size();
+  c.fine_tets = meshes[2].tets.size();
+  const int frames = static_cast<int>(std::lround(sc.time.duration / sc.time.frame_dt));
+  const int chunk = sc.time.substeps / kChunks;
+  std::vector<HierarchyEvent> events;
+  adapt.evaluate(sim);
+  for (int frame = 1; frame <= frames; ++frame) {
+    for (int k = 0; k < kChunks; ++k) {
+      sim.advance(chunk);
+      uniform.advance(chunk);
+      sim.fill_inactive();
+      c.t.push_back(sim.time());
+      c.adaptive.push_back(tip(sim.state(2), meshes[2]));
+      c.uniform.push_back(tip(uniform.state(), meshes[2]));
+    }
+    adapt.update(sim, frame, events);
+    std::size_t total = 0;
+    for (int l = 0; l < 3; ++l) total += sim.lists().active(l).size();
+    c.max_total_active = std::max(c.max_total_active, total);
+    c.max_fine_active = std::max(c.max_fine_active, sim.lists().active(2).size());
+  }
+  for (const HierarchyEvent& e : events) {
+    c.splits += e.kind == "split";
+    c.merges += e.kind == "merge";
+  }
+  return c;
+}
+
+validation::Check check(const std::string& id, const std::string& title,
+                        const std::string& quantity, double measured, double lower,
+                        double upper) {
+  validation::Check c;
+  c.id = id;
+  c.group = "Adaptive vs uniform";
+  c.title = title;
+  c.quantity = quantity;
+  c.measured = measured;
+  c.lower = lower;
+  c.upper = upper;
+  return c;
+}
+
+validation::Series curves_series(const Curves& c) {
+  validation::Series s;
+  s.x_label = "t (s)";
+  s.y_label = "tip deflection (m, down)";
+  s.columns = {"t", "adaptive (beam_adaptive.yaml)", "L2 alone"};
+  for (size_t k = 0; k < c.t.size(); ++k) s.rows.push_back({c.t[k], c.adaptive[k], c.uniform[k]});
+  return s;
+}
+
+constexpr double kThreeD = 10.001;  // Hz, validation.md §2.2/§2.3 (C3D10 h = 2.5 mm)
+
+}  // namespace
+
+// Bands. The adaptive run's finest level is L2 (1641 tets, ~4 elements across the 20 mm,
+// test_beam_levels_frequency.cpp): by §2.3 that level itself is off the 3-D answer by up to
+// +9 % in f1 and -20 % in deflection ("at 4 across"). Adaptivity is acceptable when it adds
+// less than the finest level's own discretisation error, so the adaptive-minus-uniform
+// differences are held to those bands, and the adaptive f1 to L2's own §2.3 band. The time
+// curves cannot be held much tighter than a peak: the criterion is zero at rest, so the first
+// frame (0.02 s, L0's half period) runs on L0 alone, which deflects to only 1/6 of L2's and
+// leaves the refined beam oscillating with another amplitude and phase (see the note).
+// Breaking it: a coupling that stiffens or softens the mixed-level beam by 10 % (wrong ghost
+// weights, masses lost at interfaces) moves f1 by 5 % and the deflection by 10 %, outside once
+// doubled; everything refined (no saving) fails the active-point check; a divergence fails all.
+TEST(AdaptiveVsUniform, AdaptiveBeamFollowsTheFinestLevelAlone) {
+  const Scenario sc = beam_adaptive({});
+  const Curves c = run_both(sc);
+  const double sample = c.t[1] - c.t[0];
+  const Oscillation a = measure_oscillation(c.adaptive, sample);
+  const Oscillation u = measure_oscillation(c.uniform, sample);
+  double worst = 0;
+  for (size_t k = 0; k < c.t.size(); ++k)
+    worst = std::max(worst, std::abs(c.adaptive[k] - c.uniform[k]));
+  const double peak = peak_value(c.uniform);
+  const double dstatic = a.mean / u.mean - 1, df = a.frequency / u.frequency - 1;
+  const double active = static_cast<double>(c.max_fine_active) / c.fine_points;
+  std::printf("adaptive vs L2 alone: static %.4e / %.4e m (%+.2f %%), f1 %.4f / %.4f Hz (%+.2f "
+              "%%), max deviation %.3f of the peak %.4e m; finest points active at most %zu of "
+              "%zu (all levels %zu); %d splits, %d merges\n", a.mean, u.mean, 100 * dstatic,
+              a.frequency, u.frequency, 100 * df, worst / peak, peak, c.max_fine_active,
+              c.fine_points, c.max_total_active, c.splits, c.merges);
+  ASSERT_GE(a.periods, 8);
+  ASSERT_GE(u.periods, 8);
+  EXPECT_NEAR(df, 0, 0.09);
+  EXPECT_NEAR(dstatic, 0, 0.20);
+  EXPECT_LE(worst / peak, 1.0);
+  EXPECT_LT(c.max_fine_active, c.fine_points);  // the adaptive run did not refine everything
+  // L2's band of test_beam_levels_frequency.cpp: elements across by tet count against the
+  // gmsh h = 5 mm row (1787 tets), +9 % scaled by (4 / across)².
+  const double across = kBeamH / (5e-3 * std::cbrt(1787.0 / static_cast<double>(c.fine_tets)));
+  const double f_lower = 0.99 * kThreeD,
+               f_upper = kThreeD * (1 + 0.09 * std::max(1.0, (4 / across) * (4 / across)));
+  EXPECT_GE(a.frequency, f_lower);
+  EXPECT_LE(a.frequency, f_upper);
+
+  char cost[300];
+  std::snprintf(cost, sizeof cost,
+                "at most %zu of the %zu finest points active (%.0f %%; %zu active points on all "
+                "levels), %d splits and %d merges over %.1f s; static %.4e / %.4e m, f1 %.4f / "
+                "%.4f Hz (adaptive / L2 alone)",
+                c.max_fine_active, c.fine_points, 100 * active, c.max_total_active, c.splits,
+                c.merges, sc.time.duration, a.mean, u.mean, a.frequency, u.frequency);
+  const std::string source = "validation.md §2.3 suggested tolerances at 4 across (the finest "
+                             "level's own error: f1 +9 %, deflection -20 %)";
+
+  validation::Check cf = check("adaptive_vs_uniform_f1",
+                               "Beam, adaptive 3 levels (beam_adaptive.yaml) vs L2 alone: f1",
+                               "f1 adaptive / f1 L2 alone - 1", df, -0.09, 0.09);
+  cf.reference_source = source;
+  cf.tolerance = "±9 %: no more than the finest level's own f1 error";
+  cf.note = cost;
+  const validation::Series series = curves_series(c);
+  validation::record(cf, &series);
+
+  validation::Check cs = check("adaptive_vs_uniform_static",
+                               "Beam, adaptive 3 levels vs L2 alone: static tip deflection",
+                               "static adaptive / static L2 alone - 1", dstatic, -0.20, 0.20);
+  cs.reference_source = source;
+  cs.tolerance = "±20 %: no more than the finest level's own deflection error";
+  cs.note = cost;
+  validation::record(cs);
+
+  validation::Check cd = check("adaptive_vs_uniform_max_deviation",
+                               "Beam, adaptive 3 levels vs L2 alone: largest tip difference "
+                               "over 1 s", "max |w_adaptive - w_L2| / peak w_L2", worst / peak,
+                               0, 1.0);
+  cd.reference_source = "no analytic reference: both runs start from rest under sudden gravity";
+  cd.tolerance = "below one peak (the curves may be out of phase: see note)";
+  const size_t first_frame = kChunks - 1;
+  char lag[400];
+  std::snprintf(lag, sizeof lag,
+                "The criterion is zero at rest, so the first frame (%.2f s, about L0's half "
+                "period) runs on L0 alone: tip %.2e m at its end against %.2e m for L2 alone. "
+                "The refined beam then oscillates about L2's static deflection with another "
+                "amplitude and phase. Static value and f1 agree; the transient does not.",
+                sc.time.frame_dt, c.adaptive[first_frame], c.uniform[first_frame]);
+  cd.note = lag;
+  validation::record(cd);
+
+  validation::Check ch = check("beam_levels_f1_adaptive",
+                               "f1 of the three-level adaptive beam (beam_adaptive.yaml, Green, "
+                               "psi = 2) against the band of its finest level L2",
+                               "f1", a.frequency, f_lower, f_upper);
+  ch.group = "Beam levels: first bending frequency";
+  ch.unit = "Hz";
+  ch.reference = 10.855;
+  ch.reference_source = "validation.md §2.3 row 'gmsh h = 5 mm' (lumped f1 10.855 Hz) and "
+                        "'at 4 across f1 +9 %', as for L2 alone";
+  ch.tolerance = "-1 % / +9 % x (4/across)^2 of the 3-D 10.001 Hz (L2's band)";
+  ch.note = cost;
+  validation::record(ch);
+}
