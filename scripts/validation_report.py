@@ -110,8 +110,13 @@ def plot(folder, record, png):
 
 def git_revision():
     try:
-        return subprocess.run(["git", "-C", str(ROOT), "rev-parse", "--short", "HEAD"],
-                              capture_output=True, text=True, check=True).stdout.strip()
+        git = ["git", "-C", str(ROOT)]
+        rev = subprocess.run(git + ["rev-parse", "--short", "HEAD"], capture_output=True,
+                             text=True, check=True).stdout.strip()
+        dirty = subprocess.run(git + ["status", "--porcelain", "--untracked-files=no",
+                                      "--", "src", "tests"],
+                               capture_output=True, text=True, check=True).stdout.strip()
+        return rev + (" with uncommitted changes to src/ or tests/" if dirty else "")
     except (OSError, subprocess.CalledProcessError):
         return "unknown"
 

@@ -20,7 +20,8 @@ struct CompareArgs {
 const char* const kFooter =
     "Compares scenario.yaml (without output.dir), every dataset and attribute of log.h5, every\n"
     "frame of frames.pvd (points, cells, point/cell/field arrays of each block) and summary.json.\n"
-    "Floats are equal when |a-b| <= atol + rtol*max(|a|,|b|) (NaN = NaN). Integers (work counters,\n"
+    "Floats are equal when |a-b| <= atol + rtol*max(|a|,|b|) (NaN = NaN). Integers (work "
+    "counters,\n"
     "active/ghost counts, status, events, connectivity) are compared exactly whatever the\n"
     "tolerances. Ignored: log.h5 /frames/wall_time and the root attributes start_time,\n"
     "mrsim_version, git_revision; summary.json wall_time, mrsim_version, git_revision.\n"
@@ -58,13 +59,16 @@ int run_compare(const CompareArgs& a) {
 
 CompareCommand add_compare_command(CLI::App& app) {
   auto args = std::make_shared<CompareArgs>();
-  CLI::App* cmd = app.add_subcommand("compare", "Compare two output folders of `mrsim run` (golden-file regression)");
+  CLI::App* cmd = app.add_subcommand(
+      "compare", "Compare two output folders of `mrsim run` (golden-file regression)");
   cmd->footer(kFooter);
   cmd->add_option("RUN_A", args->run_a, "Output folder A (e.g. the golden run)")->required();
   cmd->add_option("RUN_B", args->run_b, "Output folder B")->required();
-  cmd->add_option("--rtol", args->tolerance.rtol, "Relative tolerance on floats (default 0: identical values)")
+  cmd->add_option("--rtol", args->tolerance.rtol,
+                  "Relative tolerance on floats (default 0: identical values)")
       ->check(kNonNegative);
-  cmd->add_option("--atol", args->tolerance.atol, "Absolute tolerance on floats (default 0)")->check(kNonNegative);
+  cmd->add_option("--atol", args->tolerance.atol, "Absolute tolerance on floats (default 0)")
+      ->check(kNonNegative);
   return {cmd, [args] { return run_compare(*args); }};
 }
 

@@ -1,9 +1,8 @@
 #pragma once
 // `mrsim compare RUN_A RUN_B [--rtol R] [--atol A]`: golden-file regression between two output
 // folders of `mrsim run` (issue 7; docs/output.md "Comparing runs").
-#include <functional>
-
 #include <CLI/CLI.hpp>
+#include <functional>
 
 namespace mrsim {
 

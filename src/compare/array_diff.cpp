@@ -45,7 +45,8 @@ void record(ArrayDiff& d, std::size_t i, double abs, double rel) {
 void diff_reals(const std::vector<double>& a, const std::vector<double>& b,
                 const Tolerance& tolerance, ArrayDiff& d) {
   for (std::size_t i = 0; i < a.size(); ++i) {
-    if (!within(a[i], b[i], tolerance)) record(d, i, absolute_gap(a[i], b[i]), relative_gap(a[i], b[i]));
+    if (!within(a[i], b[i], tolerance))
+      record(d, i, absolute_gap(a[i], b[i]), relative_gap(a[i], b[i]));
   }
 }
 
@@ -53,11 +54,13 @@ void diff_integers(const std::vector<std::int64_t>& a, const std::vector<std::in
                    ArrayDiff& d) {
   for (std::size_t i = 0; i < a.size(); ++i) {
     // In double: the int64 subtraction could overflow, and the gap is only for display.
-    if (a[i] != b[i]) record(d, i, std::fabs(static_cast<double>(a[i]) - static_cast<double>(b[i])), -1);
+    if (a[i] != b[i])
+      record(d, i, std::fabs(static_cast<double>(a[i]) - static_cast<double>(b[i])), -1);
   }
 }
 
-void diff_texts(const std::vector<std::string>& a, const std::vector<std::string>& b, ArrayDiff& d) {
+void diff_texts(const std::vector<std::string>& a, const std::vector<std::string>& b,
+                ArrayDiff& d) {
   for (std::size_t i = 0; i < a.size(); ++i) {
     if (a[i] != b[i]) record(d, i, 0, -1);
   }
@@ -65,10 +68,13 @@ void diff_texts(const std::vector<std::string>& a, const std::vector<std::string
 
 std::size_t stored_count(const ValueArray& v) {
   switch (v.kind) {
-    case ValueKind::Real: return v.reals.size();
-    case ValueKind::Integer: return v.integers.size();
+    case ValueKind::Real:
+      return v.reals.size();
+    case ValueKind::Integer:
+      return v.integers.size();
     case ValueKind::Text:
-    case ValueKind::Bytes: return v.texts.size();
+    case ValueKind::Bytes:
+      return v.texts.size();
   }
   return 0;
 }
@@ -82,10 +88,16 @@ ArrayDiff diff_arrays(const ValueArray& a, const ValueArray& b, const Tolerance&
   ArrayDiff d;
   d.total = stored_count(a);
   switch (a.kind) {
-    case ValueKind::Real: diff_reals(a.reals, b.reals, tolerance, d); break;
-    case ValueKind::Integer: diff_integers(a.integers, b.integers, d); break;
+    case ValueKind::Real:
+      diff_reals(a.reals, b.reals, tolerance, d);
+      break;
+    case ValueKind::Integer:
+      diff_integers(a.integers, b.integers, d);
+      break;
     case ValueKind::Text:
-    case ValueKind::Bytes: diff_texts(a.texts, b.texts, d); break;
+    case ValueKind::Bytes:
+      diff_texts(a.texts, b.texts, d);
+      break;
   }
   return d;
 }

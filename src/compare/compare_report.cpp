@@ -19,7 +19,8 @@ std::string grouped(const std::vector<std::string>& items) {
     const std::size_t space = item.find(' ');
     const std::string file = item.substr(0, space);
     const std::string what = space == std::string::npos ? "" : item.substr(space + 1);
-    auto group = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == file; });
+    auto group =
+        std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == file; });
     if (group == groups.end()) {
       groups.emplace_back(file, what);
     } else {
@@ -39,7 +40,9 @@ std::string grouped(const std::vector<std::string>& items) {
 
 }  // namespace
 
-void CompareReport::compared(Section section, std::size_t count) { counts(section).compared += count; }
+void CompareReport::compared(Section section, std::size_t count) {
+  counts(section).compared += count;
+}
 
 void CompareReport::add_lines(Section section, std::vector<Difference> lines) {
   ++counts(section).differing;
@@ -63,11 +66,13 @@ void CompareReport::ignore(const std::string& what) {
 }
 
 bool CompareReport::identical() const {
-  return std::all_of(std::begin(counts_), std::end(counts_), [](const Counts& c) { return c.differing == 0; });
+  return std::all_of(std::begin(counts_), std::end(counts_),
+                     [](const Counts& c) { return c.differing == 0; });
 }
 
 std::string CompareReport::summary_line(const Tolerance& tolerance) const {
-  const std::string within = "rtol=" + number_text(tolerance.rtol) + ", atol=" + number_text(tolerance.atol);
+  const std::string within =
+      "rtol=" + number_text(tolerance.rtol) + ", atol=" + number_text(tolerance.atol);
   const Counts& log = counts(Section::Log);
   const Counts& scenario = counts(Section::Scenario);
   const Counts& frames = counts(Section::Frames);
@@ -75,17 +80,17 @@ std::string CompareReport::summary_line(const Tolerance& tolerance) const {
   const std::string vtu_frames = " in " + plural(frames_, "frame", "frames");
   if (identical()) {
     return "mrsim compare: identical within " + within + " (" +
-           plural(log.compared, "log.h5 dataset or attribute", "log.h5 datasets and attributes") + ", " +
-           plural(scenario.compared, "scenario key", "scenario keys") + ", " +
+           plural(log.compared, "log.h5 dataset or attribute", "log.h5 datasets and attributes") +
+           ", " + plural(scenario.compared, "scenario key", "scenario keys") + ", " +
            plural(frames.compared, "VTU array", "VTU arrays") + vtu_frames + ", " +
            plural(summary.compared, "summary.json key", "summary.json keys") + ")";
   }
   const auto of = [](const Counts& c, const std::string& what) {
     return std::to_string(c.differing) + " of " + std::to_string(c.compared) + " " + what;
   };
-  return "mrsim compare: " + of(log, "log.h5 datasets/attributes") + ", " + of(scenario, "scenario keys") +
-         ", " + of(frames, "VTU arrays" + vtu_frames) + ", " + of(summary, "summary.json keys") +
-         " differ (" + within + ")";
+  return "mrsim compare: " + of(log, "log.h5 datasets/attributes") + ", " +
+         of(scenario, "scenario keys") + ", " + of(frames, "VTU arrays" + vtu_frames) + ", " +
+         of(summary, "summary.json keys") + " differ (" + within + ")";
 }
 
 void CompareReport::print(std::ostream& out, const Tolerance& tolerance) const {
@@ -93,7 +98,8 @@ void CompareReport::print(std::ostream& out, const Tolerance& tolerance) const {
   for (const Difference& line : lines_) out << line.subject << ": " << line.detail << '\n';
   for (const std::string& name : series_order_) {
     const Series& s = series_.at(name);
-    if (s.more > 0) out << name << ": and " << plural(s.more, "more frame", "more frames") << " differ\n";
+    if (s.more > 0)
+      out << name << ": and " << plural(s.more, "more frame", "more frames") << " differ\n";
   }
   if (!ignored_.empty()) out << "ignored: " << grouped(ignored_) << '\n';
   out << summary_line(tolerance) << '\n';

@@ -24,7 +24,8 @@ class CompareReport {
  public:
   static constexpr std::size_t kFramesPerSeries = 20;
 
-  CompareReport(std::string run_a, std::string run_b) : run_a_(std::move(run_a)), run_b_(std::move(run_b)) {}
+  CompareReport(std::string run_a, std::string run_b)
+      : run_a_(std::move(run_a)), run_b_(std::move(run_b)) {}
 
   /// `count` more items of `section` were compared (a dataset, a key, a VTU array of a frame).
   void compared(Section section, std::size_t count = 1);

@@ -20,7 +20,8 @@ void check_run_folder(const fs::path& run) {
   if (!fs::is_directory(run, ec)) throw InputError(run.string() + ": not a folder");
 }
 
-void report_json(const JsonDiff& d, Section section, const std::string& file, CompareReport& report) {
+void report_json(const JsonDiff& d, Section section, const std::string& file,
+                 CompareReport& report) {
   report.compared(section, d.compared);
   for (const std::string& path : d.ignored) report.ignore(file + " " + path);
   for (const JsonDifference& key : d.differences) {
@@ -28,7 +29,8 @@ void report_json(const JsonDiff& d, Section section, const std::string& file, Co
   }
 }
 
-void diff_scenario_files(const fs::path& a, const fs::path& b, const Tolerance& tolerance, CompareReport& report) {
+void diff_scenario_files(const fs::path& a, const fs::path& b, const Tolerance& tolerance,
+                         CompareReport& report) {
   const std::string text_a = read_whole_file(a / "scenario.yaml");
   const std::string text_b = read_whole_file(b / "scenario.yaml");
   const JsonDiff d = diff_scenarios({text_a, (a / "scenario.yaml").string()},
@@ -45,7 +47,8 @@ nlohmann::json read_json(const fs::path& file) {
 }
 
 // A run killed before its end may lack summary.json: one missing is a difference, not an error.
-void diff_summary_files(const fs::path& a, const fs::path& b, const Tolerance& tolerance, CompareReport& report) {
+void diff_summary_files(const fs::path& a, const fs::path& b, const Tolerance& tolerance,
+                        CompareReport& report) {
   std::error_code ec;
   const bool in_a = fs::exists(a / "summary.json", ec);
   const bool in_b = fs::exists(b / "summary.json", ec);
@@ -54,13 +57,15 @@ void diff_summary_files(const fs::path& a, const fs::path& b, const Tolerance& t
     report.compared(Section::Summary);
     return report.add(Section::Summary, {"summary.json", in_a ? "only in A" : "only in B"});
   }
-  const JsonDiff d = diff_summaries(read_json(a / "summary.json"), read_json(b / "summary.json"), tolerance);
+  const JsonDiff d =
+      diff_summaries(read_json(a / "summary.json"), read_json(b / "summary.json"), tolerance);
   report_json(d, Section::Summary, "summary.json", report);
 }
 
 }  // namespace
 
-CompareReport compare_runs(const fs::path& run_a, const fs::path& run_b, const Tolerance& tolerance) {
+CompareReport compare_runs(const fs::path& run_a, const fs::path& run_b,
+                           const Tolerance& tolerance) {
   check_run_folder(run_a);
   check_run_folder(run_b);
   CompareReport report(run_a.string(), run_b.string());

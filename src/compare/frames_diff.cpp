@@ -17,8 +17,8 @@ const char* const kShapeSeparator = "×";
 
 // Matches items of A and B by name: A's order, then B's extras. Null where one side lacks it.
 template <class T, class NameOf>
-std::vector<std::pair<const T*, const T*>> pair_by_name(const std::vector<T>& a, const std::vector<T>& b,
-                                                        NameOf name_of) {
+std::vector<std::pair<const T*, const T*>> pair_by_name(const std::vector<T>& a,
+                                                        const std::vector<T>& b, NameOf name_of) {
   std::map<std::string, const T*> in_b;
   for (const T& item : b) in_b.emplace(name_of(item), &item);
   std::vector<std::pair<const T*, const T*>> pairs;
@@ -41,7 +41,8 @@ ValueArray times_of(const std::vector<PvdFrame>& frames, std::size_t count) {
 
 class FramesDiffer {
  public:
-  FramesDiffer(const Tolerance& tolerance, CompareReport& report) : tolerance_(tolerance), report_(report) {}
+  FramesDiffer(const Tolerance& tolerance, CompareReport& report)
+      : tolerance_(tolerance), report_(report) {}
 
   void run(const std::vector<PvdFrame>& a, const std::vector<PvdFrame>& b) {
     const std::size_t count = std::min(a.size(), b.size());
@@ -55,21 +56,26 @@ class FramesDiffer {
   }
 
  private:
-  void compare_lists(const std::vector<PvdFrame>& a, const std::vector<PvdFrame>& b, std::size_t count) {
+  void compare_lists(const std::vector<PvdFrame>& a, const std::vector<PvdFrame>& b,
+                     std::size_t count) {
     report_.compared(Section::Frames, 2);
     if (a.size() != b.size()) {
-      report_.add(Section::Frames, {"frames.pvd", "A lists " + std::to_string(a.size()) + " frames, B " +
-                                                      std::to_string(b.size()) + "; the first " +
-                                                      std::to_string(count) + " are compared"});
+      report_.add(Section::Frames,
+                  {"frames.pvd", "A lists " + std::to_string(a.size()) + " frames, B " +
+                                     std::to_string(b.size()) + "; the first " +
+                                     std::to_string(count) + " are compared"});
     }
     const ValueArray times_a = times_of(a, count);
     const ValueArray times_b = times_of(b, count);
     const ArrayDiff d = diff_arrays(times_a, times_b, tolerance_);
-    if (d.any()) report_.add(Section::Frames, {"frames.pvd timesteps", diff_text(d, times_a, times_b, {"entry"})});
+    if (d.any())
+      report_.add(Section::Frames,
+                  {"frames.pvd timesteps", diff_text(d, times_a, times_b, {"entry"})});
   }
 
   void compare_frame(const std::vector<FrameBlock>& a, const std::vector<FrameBlock>& b) {
-    for (const auto& [block_a, block_b] : pair_by_name(a, b, [](const FrameBlock& f) { return f.name; })) {
+    for (const auto& [block_a, block_b] :
+         pair_by_name(a, b, [](const FrameBlock& f) { return f.name; })) {
       if (block_a == nullptr || block_b == nullptr) {
         const std::string name = (block_a != nullptr ? block_a : block_b)->name;
         report_.compared(Section::Frames);
@@ -89,9 +95,10 @@ class FramesDiffer {
     }
     if (a.points != b.points || a.cells != b.cells) {
       report_.compared(Section::Frames);
-      return add(block, "", "sizes differ: A " + std::to_string(a.points) + " points, " + std::to_string(a.cells) +
-                                " cells; B " + std::to_string(b.points) + " points, " + std::to_string(b.cells) +
-                                " cells");
+      return add(block, "",
+                 "sizes differ: A " + std::to_string(a.points) + " points, " +
+                     std::to_string(a.cells) + " cells; B " + std::to_string(b.points) +
+                     " points, " + std::to_string(b.cells) + " cells");
     }
     const auto label_of = [](const BlockArray& array) { return array.label; };
     for (const auto& [array_a, array_b] : pair_by_name(a.arrays, b.arrays, label_of)) {
@@ -109,7 +116,8 @@ class FramesDiffer {
     const std::string series = block + " " + a.label;
     std::string shape = " ";  // appended: GCC 12 warns falsely on " " + string (bug 105651)
     shape += shape_text(a.values.shape, kShapeSeparator);
-    if (const auto layout = layout_difference(a.values, b.values, kShapeSeparator)) return add(series, shape, *layout);
+    if (const auto layout = layout_difference(a.values, b.values, kShapeSeparator))
+      return add(series, shape, *layout);
     const ArrayDiff d = diff_arrays(a.values, b.values, tolerance_);
     if (d.any()) add(series, shape, diff_text(d, a.values, b.values, a.axes));
   }
@@ -125,7 +133,8 @@ class FramesDiffer {
 
 }  // namespace
 
-void diff_frames(const fs::path& run_a, const fs::path& run_b, const Tolerance& tolerance, CompareReport& report) {
+void diff_frames(const fs::path& run_a, const fs::path& run_b, const Tolerance& tolerance,
+                 CompareReport& report) {
   const fs::path pvd_a = run_a / "frames.pvd";
   const fs::path pvd_b = run_b / "frames.pvd";
   std::error_code ec;

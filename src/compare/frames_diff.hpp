@@ -12,7 +12,7 @@ namespace mrsim {
 /// Adds to `report` (Section::Frames). A frames.pvd in one run only is a difference; in
 /// neither, nothing is compared. Throws InputError naming the file when a frame or piece
 /// cannot be read.
-void diff_frames(const std::filesystem::path& run_a, const std::filesystem::path& run_b, const Tolerance& tolerance,
-                 CompareReport& report);
+void diff_frames(const std::filesystem::path& run_a, const std::filesystem::path& run_b,
+                 const Tolerance& tolerance, CompareReport& report);
 
 }  // namespace mrsim

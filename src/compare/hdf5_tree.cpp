@@ -29,7 +29,8 @@ auto as_input_error(F&& body) -> decltype(body()) {
 // The visitors run inside HDF5's C code: nothing may throw through it.
 herr_t collect_link(hid_t, const char* name, const H5L_info_t* info, void* names) {
   try {
-    if (info->type == H5L_TYPE_HARD) static_cast<std::vector<std::string>*>(names)->emplace_back(name);
+    if (info->type == H5L_TYPE_HARD)
+      static_cast<std::vector<std::string>*>(names)->emplace_back(name);
     return 0;
   } catch (...) {
     return -1;
@@ -48,8 +49,8 @@ herr_t collect_attribute(hid_t, const char* name, const H5A_info_t*, void* names
 std::vector<std::string> attribute_names(hid_t object, Where where) {
   std::vector<std::string> names;
   hsize_t position = 0;
-  h5::check(H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_INC, &position, collect_attribute, &names), where,
-            "list the attributes");
+  h5::check(H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_INC, &position, collect_attribute, &names),
+            where, "list the attributes");
   return names;
 }
 
@@ -86,8 +87,9 @@ struct Source {
   Where where;
 
   void read(hid_t memory_type, void* buffer) const {
-    const herr_t status = attribute ? H5Aread(object.get(), memory_type, buffer)
-                                    : H5Dread(object.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer);
+    const herr_t status =
+        attribute ? H5Aread(object.get(), memory_type, buffer)
+                  : H5Dread(object.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer);
     h5::check(status, where, "read the values");
   }
 };
@@ -97,8 +99,9 @@ Source open_source(hid_t file_id, const Hdf5Item& item, Where where) {
   s.where = where;
   s.attribute = !item.attribute.empty();
   if (s.attribute) {
-    s.object = h5::checked(H5Aopen_by_name(file_id, item.object.c_str(), item.attribute.c_str(), H5P_DEFAULT,
-                                           H5P_DEFAULT), H5Aclose, where, "open the attribute");
+    s.object = h5::checked(H5Aopen_by_name(file_id, item.object.c_str(), item.attribute.c_str(),
+                                           H5P_DEFAULT, H5P_DEFAULT),
+                           H5Aclose, where, "open the attribute");
     s.type = h5::checked(H5Aget_type(s.object.get()), H5Tclose, where, "get the type");
     s.space = h5::checked(H5Aget_space(s.object.get()), H5Sclose, where, "get the dataspace");
   } else {
@@ -117,7 +120,8 @@ Shape shape_of(const Source& s) {
   const int rank = H5Sget_simple_extent_ndims(s.space.get());
   if (rank < 0) h5::throw_error(s.where, "get the rank");
   std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-  h5::check(H5Sget_simple_extent_dims(s.space.get(), dims.data(), nullptr), s.where, "get the shape");
+  h5::check(H5Sget_simple_extent_dims(s.space.get(), dims.data(), nullptr), s.where,
+            "get the shape");
   return Shape(dims.begin(), dims.end());
 }
 
@@ -165,8 +169,9 @@ std::vector<std::string> read_bytes(const Source& s, std::size_t count) {
   // Pointers inside the elements would make raw bytes meaningless.
   if (H5Tdetect_class(type, H5T_VLEN) > 0 || H5Tdetect_class(type, H5T_STRING) > 0 ||
       H5Tdetect_class(type, H5T_REFERENCE) > 0) {
-    throw InputError(std::string(s.where.file) + ":" + std::string(s.where.object) +
-                     ": unsupported HDF5 type (variable-length data or references inside a compound)");
+    throw InputError(
+        std::string(s.where.file) + ":" + std::string(s.where.object) +
+        ": unsupported HDF5 type (variable-length data or references inside a compound)");
   }
   const Handle memory = h5::checked(H5Tget_native_type(type, H5T_DIR_ASCEND), H5Tclose, s.where,
                                     "get the native type");
@@ -190,8 +195,9 @@ ValueArray read_values(const Source& s) {
       break;
     case H5T_STRING:
       v.kind = ValueKind::Text;
-      v.texts = H5Tis_variable_str(s.type.get()) > 0 ? read_variable_strings(s, count)
-                                                      : read_fixed_elements(s, s.type.get(), count, true);
+      v.texts = H5Tis_variable_str(s.type.get()) > 0
+                    ? read_variable_strings(s, count)
+                    : read_fixed_elements(s, s.type.get(), count, true);
       break;
     default:
       v.kind = ValueKind::Bytes;
@@ -212,14 +218,16 @@ struct Hdf5Tree::Impl {
 Hdf5Tree::Hdf5Tree(const std::filesystem::path& file) : impl_(std::make_unique<Impl>()) {
   impl_->file = file.string();
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(impl_->file + ": file not found");
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw InputError(impl_->file + ": file not found");
   h5::silence_automatic_error_printing();
   as_input_error([&] {
     const Where where{impl_->file, ""};
-    const Handle access = h5::checked(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, where, "create a property list");
+    const Handle access =
+        h5::checked(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, where, "create a property list");
     h5::check(H5Pset_file_locking(access.get(), false, true), where, "disable file locking");
-    impl_->id = h5::checked(H5Fopen(impl_->file.c_str(), H5F_ACC_RDONLY, access.get()), H5Fclose, where,
-                            "open the file as HDF5");
+    impl_->id = h5::checked(H5Fopen(impl_->file.c_str(), H5F_ACC_RDONLY, access.get()), H5Fclose,
+                            where, "open the file as HDF5");
     impl_->items = list_items(impl_->id.get(), impl_->file);
   });
 }

@@ -15,12 +15,14 @@ const char* const kMissing = "(missing)";
 
 class JsonDiffer {
  public:
-  JsonDiffer(const Tolerance& tolerance, const IgnoreKey& ignore) : tolerance_(tolerance), ignore_(ignore) {}
+  JsonDiffer(const Tolerance& tolerance, const IgnoreKey& ignore)
+      : tolerance_(tolerance), ignore_(ignore) {}
 
   void compare(const json& a, const json& b, const std::string& pointer) {
     if (a.is_object() && b.is_object()) return compare_objects(a, b, pointer);
     if (a.is_array() && b.is_array() && a.size() == b.size()) {
-      for (std::size_t i = 0; i < a.size(); ++i) compare(a[i], b[i], scenario::child_pointer(pointer, i));
+      for (std::size_t i = 0; i < a.size(); ++i)
+        compare(a[i], b[i], scenario::child_pointer(pointer, i));
       return;
     }
     ++result_.compared;
@@ -47,7 +49,8 @@ class JsonDiffer {
         continue;
       }
       ++result_.compared;
-      add(child, in_a ? json_value_text(a.at(key)) : kMissing, in_b ? json_value_text(b.at(key)) : kMissing);
+      add(child, in_a ? json_value_text(a.at(key)) : kMissing,
+          in_b ? json_value_text(b.at(key)) : kMissing);
     }
   }
 
@@ -68,7 +71,8 @@ class JsonDiffer {
 
 }  // namespace
 
-JsonDiff diff_json(const json& a, const json& b, const Tolerance& tolerance, const IgnoreKey& ignore) {
+JsonDiff diff_json(const json& a, const json& b, const Tolerance& tolerance,
+                   const IgnoreKey& ignore) {
   JsonDiffer differ(tolerance, ignore);
   differ.compare(a, b, "");
   return differ.take();

@@ -4,11 +4,10 @@
 // as in log.h5); strings, booleans, nulls and the structure exactly. Differences are named
 // by key path ("material.lambda", "object.levels.0.mesh": the form `--set` takes).
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "compare/tolerance.hpp"
 

@@ -36,10 +36,13 @@ std::vector<ItemPair> pair_items(const Hdf5Tree& a, const Hdf5Tree& b) {
 }
 
 bool is_ignored(const std::string& name) {
-  return std::find(kIgnoredLogItems.begin(), kIgnoredLogItems.end(), name) != kIgnoredLogItems.end();
+  return std::find(kIgnoredLogItems.begin(), kIgnoredLogItems.end(), name) !=
+         kIgnoredLogItems.end();
 }
 
-bool is_single_text(const ValueArray& v) { return v.kind == ValueKind::Text && v.texts.size() == 1; }
+bool is_single_text(const ValueArray& v) {
+  return v.kind == ValueKind::Text && v.texts.size() == 1;
+}
 
 std::string subject(const std::string& name, const ValueArray& v) {
   std::string text = "log.h5 " + name;
@@ -52,9 +55,14 @@ std::string subject(const std::string& name, const ValueArray& v) {
 
 class LogDiffer {
  public:
-  LogDiffer(const std::filesystem::path& a, const std::filesystem::path& b, const Tolerance& tolerance,
-            CompareReport& report)
-      : a_(a), b_(b), file_a_(a.string()), file_b_(b.string()), tolerance_(tolerance), report_(report) {}
+  LogDiffer(const std::filesystem::path& a, const std::filesystem::path& b,
+            const Tolerance& tolerance, CompareReport& report)
+      : a_(a),
+        b_(b),
+        file_a_(a.string()),
+        file_b_(b.string()),
+        tolerance_(tolerance),
+        report_(report) {}
 
   void run() {
     for (const ItemPair& pair : pair_items(a_, b_)) {
@@ -64,7 +72,8 @@ class LogDiffer {
       }
       report_.compared(Section::Log);
       if (pair.a == nullptr || pair.b == nullptr) {
-        report_.add(Section::Log, {"log.h5 " + pair.name, pair.a != nullptr ? "only in A" : "only in B"});
+        report_.add(Section::Log,
+                    {"log.h5 " + pair.name, pair.a != nullptr ? "only in A" : "only in B"});
         continue;
       }
       compare(pair.name, a_.read(*pair.a), b_.read(*pair.b));
@@ -73,8 +82,10 @@ class LogDiffer {
 
  private:
   void compare(const std::string& name, const ValueArray& a, const ValueArray& b) {
-    if (name == kScenarioAttribute && is_single_text(a) && is_single_text(b)) return compare_scenarios(a, b);
-    if (const auto layout = layout_difference(a, b)) return report_.add(Section::Log, {subject(name, a), *layout});
+    if (name == kScenarioAttribute && is_single_text(a) && is_single_text(b))
+      return compare_scenarios(a, b);
+    if (const auto layout = layout_difference(a, b))
+      return report_.add(Section::Log, {subject(name, a), *layout});
     const ArrayDiff d = diff_arrays(a, b, tolerance_);
     if (d.any()) report_.add(Section::Log, {subject(name, a), diff_text(d, a, b)});
   }
@@ -101,8 +112,8 @@ class LogDiffer {
 
 }  // namespace
 
-void diff_logs(const std::filesystem::path& a, const std::filesystem::path& b, const Tolerance& tolerance,
-               CompareReport& report) {
+void diff_logs(const std::filesystem::path& a, const std::filesystem::path& b,
+               const Tolerance& tolerance, CompareReport& report) {
   LogDiffer(a, b, tolerance, report).run();
 }
 

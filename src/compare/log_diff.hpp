@@ -17,7 +17,7 @@ inline constexpr std::array<std::string_view, 4> kIgnoredLogItems = {
 
 /// Adds to `report` (Section::Log). Throws InputError naming the file when either log cannot
 /// be read.
-void diff_logs(const std::filesystem::path& a, const std::filesystem::path& b, const Tolerance& tolerance,
-               CompareReport& report);
+void diff_logs(const std::filesystem::path& a, const std::filesystem::path& b,
+               const Tolerance& tolerance, CompareReport& report);
 
 }  // namespace mrsim

@@ -6,8 +6,8 @@
 namespace mrsim {
 
 struct PvdFrame {
-  double time = 0;              // s, the `timestep` attribute
-  std::filesystem::path file;   // the .vtm, resolved against the .pvd's folder
+  double time = 0;             // s, the `timestep` attribute
+  std::filesystem::path file;  // the .vtm, resolved against the .pvd's folder
 };
 
 /// Throws InputError naming `pvd` when it cannot be read or an entry lacks a valid

@@ -6,7 +6,8 @@ bool is_ignored_summary_key(const std::string& key) {
   return key.find("wall") != std::string::npos || key == "mrsim_version" || key == "git_revision";
 }
 
-JsonDiff diff_summaries(const nlohmann::json& a, const nlohmann::json& b, const Tolerance& tolerance) {
+JsonDiff diff_summaries(const nlohmann::json& a, const nlohmann::json& b,
+                        const Tolerance& tolerance) {
   return diff_json(a, b, tolerance, [](const std::string&, const std::string& key) {
     return is_ignored_summary_key(key);
   });

@@ -1,9 +1,8 @@
 #pragma once
 // summary.json against summary.json (json_diff.hpp rules), leaving out what changes between
 // two runs of the same computation: wall-clock times and the build that ran it.
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "compare/json_diff.hpp"
 
@@ -13,6 +12,7 @@ namespace mrsim {
 /// `git_revision`, as in log.h5.
 bool is_ignored_summary_key(const std::string& key);
 
-JsonDiff diff_summaries(const nlohmann::json& a, const nlohmann::json& b, const Tolerance& tolerance);
+JsonDiff diff_summaries(const nlohmann::json& a, const nlohmann::json& b,
+                        const Tolerance& tolerance);
 
 }  // namespace mrsim

@@ -10,10 +10,14 @@ std::size_t element_count(const Shape& shape) {
 
 const char* kind_name(ValueKind kind) {
   switch (kind) {
-    case ValueKind::Real: return "float";
-    case ValueKind::Integer: return "integer";
-    case ValueKind::Text: return "string";
-    case ValueKind::Bytes: return "binary";
+    case ValueKind::Real:
+      return "float";
+    case ValueKind::Integer:
+      return "integer";
+    case ValueKind::Text:
+      return "string";
+    case ValueKind::Bytes:
+      return "binary";
   }
   return "unknown";
 }

@@ -26,9 +26,9 @@ enum class ValueKind {
 struct ValueArray {
   ValueKind kind = ValueKind::Real;
   Shape shape;
-  std::vector<double> reals;            // kind Real
-  std::vector<std::int64_t> integers;   // kind Integer
-  std::vector<std::string> texts;       // kind Text, Bytes (one string per element)
+  std::vector<double> reals;           // kind Real
+  std::vector<std::int64_t> integers;  // kind Integer
+  std::vector<std::string> texts;      // kind Text, Bytes (one string per element)
 };
 
 /// Product of the extents (1 for a scalar).

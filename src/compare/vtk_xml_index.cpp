@@ -24,7 +24,8 @@ XmlAttributes attributes_of(vtkXMLDataElement* element) {
   return attributes;
 }
 
-vtkXMLDataElement* section_of(vtkXMLDataElement* root, const std::string& type, const std::filesystem::path& file) {
+vtkXMLDataElement* section_of(vtkXMLDataElement* root, const std::string& type,
+                              const std::filesystem::path& file) {
   const char* declared = root->GetAttribute("type");
   if (std::string_view(root->GetName()) != "VTKFile" || declared == nullptr || type != declared) {
     throw index_error(file, "not a VTK " + type + " file");
@@ -36,21 +37,24 @@ vtkXMLDataElement* section_of(vtkXMLDataElement* root, const std::string& type, 
 
 }  // namespace
 
-std::vector<XmlAttributes> read_dataset_entries(const std::filesystem::path& file, const std::string& type) {
+std::vector<XmlAttributes> read_dataset_entries(const std::filesystem::path& file,
+                                                const std::string& type) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) throw index_error(file, "file not found");
   VtkErrorCapture capture;  // the XML parser reports through vtkErrorMacro
   vtkNew<vtkXMLDataParser> parser;
   parser->SetFileName(file.c_str());
   if (parser->Parse() == 0 || capture.any() || parser->GetRootElement() == nullptr) {
-    throw index_error(file, "not well-formed XML" + (capture.any() ? ": " + capture.summary() : std::string()));
+    throw index_error(
+        file, "not well-formed XML" + (capture.any() ? ": " + capture.summary() : std::string()));
   }
   vtkXMLDataElement* section = section_of(parser->GetRootElement(), type, file);
   std::vector<XmlAttributes> entries;
   for (int i = 0; i < section->GetNumberOfNestedElements(); ++i) {
     vtkXMLDataElement* child = section->GetNestedElement(i);
     if (std::string_view(child->GetName()) != "DataSet") {
-      throw index_error(file, std::string("unsupported element <") + child->GetName() + "> (nested blocks?)");
+      throw index_error(
+          file, std::string("unsupported element <") + child->GetName() + "> (nested blocks?)");
     }
     entries.push_back(attributes_of(child));
   }
@@ -60,7 +64,8 @@ std::vector<XmlAttributes> read_dataset_entries(const std::filesystem::path& fil
 const std::string& required_attribute(const XmlAttributes& entry, const std::string& name,
                                       const std::filesystem::path& file) {
   const auto it = entry.find(name);
-  if (it == entry.end()) throw index_error(file, "a DataSet element has no '" + name + "' attribute");
+  if (it == entry.end())
+    throw index_error(file, "a DataSet element has no '" + name + "' attribute");
   return it->second;
 }
 

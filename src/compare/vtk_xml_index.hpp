@@ -15,7 +15,8 @@ using XmlAttributes = std::map<std::string, std::string>;
 /// "vtkMultiBlockDataSet"), in document order. Throws InputError naming `file` when it is
 /// missing, not well-formed XML, not a VTKFile of that type, or nests blocks (mrsim writes
 /// flat multiblocks only).
-std::vector<XmlAttributes> read_dataset_entries(const std::filesystem::path& file, const std::string& type);
+std::vector<XmlAttributes> read_dataset_entries(const std::filesystem::path& file,
+                                                const std::string& type);
 
 /// The value of `name`, or InputError naming `file` and the entry when it is absent.
 const std::string& required_attribute(const XmlAttributes& entry, const std::string& name,

@@ -1,6 +1,7 @@
 #include "compare/vtm_frames.hpp"
 
 #include <vtkAbstractArray.h>
+#include <vtkCellData.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
@@ -10,7 +11,6 @@
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkCellData.h>
 #include <vtkPointSet.h>
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
@@ -48,7 +48,8 @@ std::string unnamed(std::size_t index) {
 }
 
 InputError piece_error(const Piece& piece, const fs::path& vtm, const std::string& message) {
-  return InputError(piece.file.string() + " (block " + piece.name + " of " + vtm.string() + "): " + message);
+  return InputError(piece.file.string() + " (block " + piece.name + " of " + vtm.string() +
+                    "): " + message);
 }
 
 std::vector<Piece> list_pieces(const fs::path& vtm) {
@@ -67,7 +68,8 @@ std::vector<Piece> list_pieces(const fs::path& vtm) {
 void check_piece(Piece& piece, const fs::path& vtm) {
   std::error_code ec;
   if (!fs::is_regular_file(piece.file, ec)) throw piece_error(piece, vtm, "file not found");
-  if (piece.file.extension() == ".vtu") piece.declared = check_vtu_header(read_whole_file(piece.file), piece.file);
+  if (piece.file.extension() == ".vtu")
+    piece.declared = check_vtu_header(read_whole_file(piece.file), piece.file);
 }
 
 // VTK's messages on reading one piece alone; empty when it reads cleanly.
@@ -81,20 +83,25 @@ std::string piece_failure(const Piece& piece) {
     return "VTK ran out of memory: a size in the file is wrong";
   }
   if (capture.any()) return capture.summary();
-  return reader->GetErrorCode() != 0 ? "error code " + std::to_string(reader->GetErrorCode()) : std::string();
+  return reader->GetErrorCode() != 0 ? "error code " + std::to_string(reader->GetErrorCode())
+                                     : std::string();
 }
 
 // The multiblock reader's messages do not say which piece failed: read them one by one to
 // name it (on this error path only).
-[[noreturn]] void throw_frame_error(const std::vector<Piece>& pieces, const fs::path& vtm, const std::string& what) {
+[[noreturn]] void throw_frame_error(const std::vector<Piece>& pieces, const fs::path& vtm,
+                                    const std::string& what) {
   for (const Piece& piece : pieces) {
     const std::string failure = piece_failure(piece);
-    if (!failure.empty()) throw piece_error(piece, vtm, "VTK could not read it (truncated or corrupt file): " + failure);
+    if (!failure.empty())
+      throw piece_error(piece, vtm,
+                        "VTK could not read it (truncated or corrupt file): " + failure);
   }
   throw InputError(vtm.string() + ": VTK could not read the frame: " + what);
 }
 
-vtkSmartPointer<vtkMultiBlockDataSet> read_multiblock(const fs::path& vtm, const std::vector<Piece>& pieces) {
+vtkSmartPointer<vtkMultiBlockDataSet> read_multiblock(const fs::path& vtm,
+                                                      const std::vector<Piece>& pieces) {
   VtkErrorCapture capture;  // outlives the reader and the inner piece readers it creates
   auto reader = vtkSmartPointer<vtkXMLMultiBlockDataReader>::New();
   reader->SetFileName(vtm.c_str());
@@ -105,8 +112,10 @@ vtkSmartPointer<vtkMultiBlockDataSet> read_multiblock(const fs::path& vtm, const
     throw_frame_error(pieces, vtm, "VTK ran out of memory: a size in a piece is wrong");
   }
   if (capture.any()) throw_frame_error(pieces, vtm, capture.summary());
-  if (reader->GetErrorCode() != 0) throw_frame_error(pieces, vtm, "error code " + std::to_string(reader->GetErrorCode()));
-  vtkSmartPointer<vtkMultiBlockDataSet> blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  if (reader->GetErrorCode() != 0)
+    throw_frame_error(pieces, vtm, "error code " + std::to_string(reader->GetErrorCode()));
+  vtkSmartPointer<vtkMultiBlockDataSet> blocks =
+      vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
   if (blocks == nullptr) throw InputError(vtm.string() + ": VTK returned no multiblock dataset");
   return blocks;
 }
@@ -136,7 +145,8 @@ ValueArray numeric_values(vtkDataArray* array, const std::string& where) {
   switch (array->GetDataType()) {
     vtkTemplateMacro(copy_numbers(static_cast<const VTK_TT*>(array->GetVoidPointer(0)), count, v));
     default:
-      throw InputError(where + ": unsupported VTK array type " + std::to_string(array->GetDataType()));
+      throw InputError(where + ": unsupported VTK array type " +
+                       std::to_string(array->GetDataType()));
   }
   return v;
 }
@@ -164,7 +174,8 @@ ValueArray point_values(vtkDataSet* data, const std::string& where) {
   ValueArray v;  // other datasets (or none): coordinates one by one
   v.shape = {static_cast<std::size_t>(data->GetNumberOfPoints()), 3};
   v.reals.resize(element_count(v.shape));
-  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) data->GetPoint(i, &v.reals[3 * static_cast<std::size_t>(i)]);
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+    data->GetPoint(i, &v.reals[3 * static_cast<std::size_t>(i)]);
   return v;
 }
 
@@ -188,7 +199,8 @@ void add_cells(FrameBlock& block, vtkDataSet* data) {
   for (std::size_t c = 0; c < cells; ++c) {
     types.integers[c] = data->GetCellType(static_cast<vtkIdType>(c));
     data->GetCellPoints(static_cast<vtkIdType>(c), ids);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) connectivity.integers.push_back(ids->GetId(k));
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      connectivity.integers.push_back(ids->GetId(k));
     offsets.integers.push_back(static_cast<std::int64_t>(connectivity.integers.size()));
   }
   const std::size_t size = uniform_cell_size(offsets.integers);
@@ -200,20 +212,27 @@ void add_cells(FrameBlock& block, vtkDataSet* data) {
   if (size == 0) block.arrays.push_back({"cell offsets", {}, std::move(offsets)});
 }
 
-void add_arrays(FrameBlock& block, vtkFieldData* data, const std::string& kind, const AxisNames& axes) {
+void add_arrays(FrameBlock& block, vtkFieldData* data, const std::string& kind,
+                const AxisNames& axes) {
   if (data == nullptr) return;
   for (int i = 0; i < data->GetNumberOfArrays(); ++i) {
     vtkAbstractArray* array = data->GetAbstractArray(i);
     const char* name = array->GetName();
-    const std::string label = kind + " array " + (name != nullptr ? name : unnamed(static_cast<std::size_t>(i)));
+    const std::string label =
+        kind + " array " + (name != nullptr ? name : unnamed(static_cast<std::size_t>(i)));
     block.arrays.push_back({label, axes, array_values(array, block.piece.string() + " " + label)});
   }
 }
 
 FrameBlock to_frame_block(const Piece& piece, const std::string& name, vtkDataSet* data) {
-  FrameBlock block{name, data->GetClassName(), piece.file, static_cast<std::size_t>(data->GetNumberOfPoints()),
-                   static_cast<std::size_t>(data->GetNumberOfCells()), {}};
-  block.arrays.push_back({"points", {"point", "component"}, point_values(data, piece.file.string())});
+  FrameBlock block{name,
+                   data->GetClassName(),
+                   piece.file,
+                   static_cast<std::size_t>(data->GetNumberOfPoints()),
+                   static_cast<std::size_t>(data->GetNumberOfCells()),
+                   {}};
+  block.arrays.push_back(
+      {"points", {"point", "component"}, point_values(data, piece.file.string())});
   add_cells(block, data);
   add_arrays(block, data->GetPointData(), "point", {"point", "component"});
   add_arrays(block, data->GetCellData(), "cell", {"cell", "component"});
@@ -229,13 +248,17 @@ std::string block_name(vtkMultiBlockDataSet* blocks, unsigned index, const Piece
 
 // VTK hands back what it could read: the counts must be the ones the piece declares.
 void check_counts(const Piece& piece, const fs::path& vtm, vtkDataSet* data) {
-  if (data == nullptr) throw piece_error(piece, vtm, "VTK read no dataset from it (unreadable piece)");
+  if (data == nullptr)
+    throw piece_error(piece, vtm, "VTK read no dataset from it (unreadable piece)");
   if (!piece.declared) return;
-  if (data->GetNumberOfPoints() != piece.declared->points || data->GetNumberOfCells() != piece.declared->cells) {
-    throw piece_error(piece, vtm, "VTK read " + std::to_string(data->GetNumberOfPoints()) + " points and " +
-                                      std::to_string(data->GetNumberOfCells()) + " cells, but the file declares " +
-                                      std::to_string(piece.declared->points) + " and " +
-                                      std::to_string(piece.declared->cells) + " (truncated or corrupt file)");
+  if (data->GetNumberOfPoints() != piece.declared->points ||
+      data->GetNumberOfCells() != piece.declared->cells) {
+    throw piece_error(piece, vtm,
+                      "VTK read " + std::to_string(data->GetNumberOfPoints()) + " points and " +
+                          std::to_string(data->GetNumberOfCells()) +
+                          " cells, but the file declares " +
+                          std::to_string(piece.declared->points) + " and " +
+                          std::to_string(piece.declared->cells) + " (truncated or corrupt file)");
   }
 }
 

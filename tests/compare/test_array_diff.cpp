@@ -10,7 +10,9 @@
 namespace mrsim {
 namespace {
 
-ValueArray reals(Shape shape, std::vector<double> values) { return {ValueKind::Real, std::move(shape), std::move(values), {}, {}}; }
+ValueArray reals(Shape shape, std::vector<double> values) {
+  return {ValueKind::Real, std::move(shape), std::move(values), {}, {}};
+}
 
 TEST(ArrayDiff, FindsCountFirstWorstAbsoluteAndRelative) {
   const ValueArray a = reals({5}, {1.0, 100.0, 3.0, 0.001, 5.0});
@@ -65,7 +67,9 @@ TEST(DiffText, ReportsCountWorstPlaceAndBothValuesExactly) {
   const ArrayDiff d = diff_arrays(a, b, {});
   const std::string text = diff_text(d, a, b);
   EXPECT_NE(text.find("2 of 33 values differ"), std::string::npos) << text;
-  EXPECT_NE(text.find("max abs 9.99999999995449e-06 at [10, 2] (A 0.5, B 0.50001)"), std::string::npos) << text;
+  EXPECT_NE(text.find("max abs 9.99999999995449e-06 at [10, 2] (A 0.5, B 0.50001)"),
+            std::string::npos)
+      << text;
   EXPECT_NE(text.find("max rel"), std::string::npos) << text;
 }
 
@@ -80,7 +84,8 @@ TEST(DiffText, IntegersSayExactAndShowTheValues) {
 TEST(DiffText, SingleValuesAndLayouts) {
   const ValueArray a = reals({}, {0.25}), b = reals({}, {0.5});
   EXPECT_EQ(diff_text(diff_arrays(a, b, {}), a, b), "A 0.25, B 0.5 (abs 0.25, rel 0.5)");
-  EXPECT_EQ(*layout_difference(reals({51}, std::vector<double>(51)), reals({26}, std::vector<double>(26))),
+  EXPECT_EQ(*layout_difference(reals({51}, std::vector<double>(51)),
+                               reals({26}, std::vector<double>(26))),
             "shapes differ: A [51], B [26]");
   const ValueArray ints{ValueKind::Integer, {}, {}, {1}, {}};
   EXPECT_EQ(*layout_difference(a, ints), "types differ: A float, B integer");
@@ -90,7 +95,8 @@ TEST(DiffText, SingleValuesAndLayouts) {
 TEST(DiffText, Strings) {
   const ValueArray a{ValueKind::Text, {3}, {}, {}, {"split", "merge", "gc"}};
   const ValueArray b{ValueKind::Text, {3}, {}, {}, {"split", "split", "gc"}};
-  EXPECT_EQ(diff_text(diff_arrays(a, b, {}), a, b), "1 of 3 strings differ; first at [1] (A \"merge\", B \"split\")");
+  EXPECT_EQ(diff_text(diff_arrays(a, b, {}), a, b),
+            "1 of 3 strings differ; first at [1] (A \"merge\", B \"split\")");
 }
 
 }  // namespace

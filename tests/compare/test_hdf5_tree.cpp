@@ -41,7 +41,9 @@ void write_log(const fs::path& file, const LogContent& c) {
   w.string_attribute("/frames/time", "units", "s");
   w.int_attribute("/", "format_version", 1);
   w.string_attribute("/", "start_time", c.start_time);
-  w.string_attribute("/", "scenario", "material:\n  lambda: " + c.lambda + "\noutput:\n  dir: " + c.output_dir + "\n");
+  w.string_attribute(
+      "/", "scenario",
+      "material:\n  lambda: " + c.lambda + "\noutput:\n  dir: " + c.output_dir + "\n");
 }
 
 struct LogPair {
@@ -69,9 +71,10 @@ TEST(Hdf5Tree, ListsEveryDatasetAndAttribute) {
   const Hdf5Tree tree(dir.path() / "log.h5");
   std::vector<std::string> names;
   for (const Hdf5Item& item : tree.items()) names.push_back(item.name);
-  const std::vector<std::string> expected{"/@format_version", "/@scenario", "/@start_time", "/events/kind",
-                                          "/frames/active", "/frames/time", "/frames/time@units",
-                                          "/frames/wall_time", "/levels/level_0/status"};
+  const std::vector<std::string> expected{
+      "/@format_version",   "/@scenario",        "/@start_time",
+      "/events/kind",       "/frames/active",    "/frames/time",
+      "/frames/time@units", "/frames/wall_time", "/levels/level_0/status"};
   EXPECT_EQ(names, expected);
 }
 
@@ -80,7 +83,8 @@ TEST(Hdf5Tree, ReadsValuesShapesAndKinds) {
   write_log(dir.path() / "log.h5", {});
   const Hdf5Tree tree(dir.path() / "log.h5");
   const auto item = [&](const std::string& name) {
-    return *std::find_if(tree.items().begin(), tree.items().end(), [&](const Hdf5Item& i) { return i.name == name; });
+    return *std::find_if(tree.items().begin(), tree.items().end(),
+                         [&](const Hdf5Item& i) { return i.name == name; });
   };
   const ValueArray time = tree.read(item("/frames/time"));
   EXPECT_EQ(time.kind, ValueKind::Real);
@@ -109,7 +113,8 @@ TEST(LogDiff, SameContentIsIdenticalAndIgnoredItemsAreListed) {
   EXPECT_EQ(report.compared_count(Section::Log), 7u);  // 9 items, wall_time and start_time ignored
   const std::string text = printed(report);
   EXPECT_NE(text.find("ignored: log.h5 /@scenario output.dir, /@start_time, /frames/wall_time"),
-            std::string::npos) << text;
+            std::string::npos)
+      << text;
   EXPECT_NE(text.find("identical within rtol=0, atol=0"), std::string::npos) << text;
 }
 
@@ -133,7 +138,8 @@ TEST(LogDiff, IntegersDifferWhateverTheTolerance) {
   const CompareReport report = pair.compare({}, b, {1e9, 1e9});
   ASSERT_EQ(report.lines().size(), 1u);
   EXPECT_EQ(report.lines()[0].subject, "log.h5 /frames/active [3, 2]");
-  EXPECT_NE(report.lines()[0].detail.find("at [1, 1] (A 4, B 5)"), std::string::npos) << report.lines()[0].detail;
+  EXPECT_NE(report.lines()[0].detail.find("at [1, 1] (A 4, B 5)"), std::string::npos)
+      << report.lines()[0].detail;
 }
 
 TEST(LogDiff, ShapeMismatchReportsBothShapes) {
@@ -171,7 +177,8 @@ TEST(LogDiff, UnreadableFilesAreInputErrorsNamingThem) {
   test::TempDir dir;
   write_log(dir.path() / "good.h5", {});
   CompareReport report("a", "b");
-  EXPECT_THROW(diff_logs(dir.path() / "good.h5", dir.path() / "missing.h5", {}, report), InputError);
+  EXPECT_THROW(diff_logs(dir.path() / "good.h5", dir.path() / "missing.h5", {}, report),
+               InputError);
   std::ofstream(dir.path() / "bad.h5") << "not an HDF5 file";
   try {
     diff_logs(dir.path() / "good.h5", dir.path() / "bad.h5", {}, report);

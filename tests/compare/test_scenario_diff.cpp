@@ -47,11 +47,13 @@ TEST(ScenarioDiff, NamesAChangedKeyWithBothValues) {
 }
 
 TEST(ScenarioDiff, NumbersWithinToleranceIntegersExact) {
-  const std::string b = replaced(replaced(kScenario, "lambda: 5.0e+4", "lambda: 5.0001e+4"), "1024", "1025");
+  const std::string b =
+      replaced(replaced(kScenario, "lambda: 5.0e+4", "lambda: 5.0001e+4"), "1024", "1025");
   const JsonDiff d = diff(kScenario, b, {1e-3, 0});
   ASSERT_EQ(d.differences.size(), 1u);
   EXPECT_EQ(d.differences[0].path, "time.substeps");
-  EXPECT_EQ(diff(kScenario, replaced(kScenario, "-9.81]", "-9.8]")).differences.at(0).path, "gravity.2");
+  EXPECT_EQ(diff(kScenario, replaced(kScenario, "-9.81]", "-9.8]")).differences.at(0).path,
+            "gravity.2");
 }
 
 TEST(ScenarioDiff, KeysOnOneSideOnly) {
@@ -71,7 +73,10 @@ TEST(ScenarioDiff, MalformedYamlIsAnInputErrorNamingTheOrigin) {
 }
 
 TEST(SummaryDiff, IgnoresWallTimesAndBuild) {
-  const nlohmann::json a = {{"frames", 10}, {"wall_time", 1.5}, {"mrsim_version", "0.1.0"}, {"max_displacement", 0.01},
+  const nlohmann::json a = {{"frames", 10},
+                            {"wall_time", 1.5},
+                            {"mrsim_version", "0.1.0"},
+                            {"max_displacement", 0.01},
                             {"force_evaluations", {100, 200}}};
   nlohmann::json b = a;
   b["wall_time"] = 9.0;

@@ -27,10 +27,10 @@ TEST(Tolerance, AbsoluteBound) {
 
 TEST(Tolerance, RelativeToTheLargerMagnitude) {
   const Tolerance t{0.01, 0};
-  EXPECT_TRUE(within(100.0, 101.0, t));    // 1 <= 0.01 * 101
-  EXPECT_TRUE(within(101.0, 100.0, t));    // symmetric
-  EXPECT_FALSE(within(100.0, 102.0, t));   // 2 > 1.02
-  EXPECT_FALSE(within(0.0, 1e-300, t));    // relative alone never forgives a zero
+  EXPECT_TRUE(within(100.0, 101.0, t));   // 1 <= 0.01 * 101
+  EXPECT_TRUE(within(101.0, 100.0, t));   // symmetric
+  EXPECT_FALSE(within(100.0, 102.0, t));  // 2 > 1.02
+  EXPECT_FALSE(within(0.0, 1e-300, t));   // relative alone never forgives a zero
   EXPECT_TRUE(within(0.0, 1e-300, {0.01, 1e-300}));
 }
 

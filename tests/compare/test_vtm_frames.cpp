@@ -1,8 +1,8 @@
 // The VTK series: a frame's blocks read into arrays, differences named by frame, block, array
 // and point, capped per series; missing or truncated pieces are input errors naming them.
 #include <gtest/gtest.h>
-
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDoubleArray.h>
 #include <vtkInformation.h>
@@ -10,7 +10,6 @@
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkCellData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSignedCharArray.h>
@@ -35,7 +34,8 @@ vtkSmartPointer<vtkUnstructuredGrid> tet_grid(double shift) {
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  for (const auto& p : {std::array{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}}) {
+  for (const auto& p :
+       {std::array{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}}) {
     points->InsertNextPoint(p.data());
   }
   grid->SetPoints(points);
@@ -92,7 +92,8 @@ void write_run(const fs::path& run, int frames, Shift shift) {
     writer->SetFileName((run / "frames" / name).c_str());
     writer->SetInputData(blocks);
     if (writer->Write() == 0) throw std::runtime_error("cannot write the frame");
-    pvd << "<DataSet timestep=\"" << 0.02 * k << "\" group=\"\" part=\"0\" file=\"frames/" << name << "\"/>\n";
+    pvd << "<DataSet timestep=\"" << 0.02 * k << "\" group=\"\" part=\"0\" file=\"frames/" << name
+        << "\"/>\n";
   }
   pvd << "</Collection>\n</VTKFile>\n";
 }
@@ -123,9 +124,11 @@ TEST(VtmFrames, NamesFrameBlockArrayAndPoint) {
   CompareReport report("a", "b");
   diff_frames(dir.path() / "a", dir.path() / "b", {}, report);
   ASSERT_EQ(report.lines().size(), 1u);
-  EXPECT_EQ(report.lines()[0].subject, "frame 2 (t = 0.04 s) block level_0 point array displacement [4×3]");
-  EXPECT_EQ(report.lines()[0].detail, "1 of 12 values differ; max abs 0.001 at point 2 component 2 (A 0, B 0.001); "
-                                      "max rel 1 at point 2 component 2");
+  EXPECT_EQ(report.lines()[0].subject,
+            "frame 2 (t = 0.04 s) block level_0 point array displacement [4×3]");
+  EXPECT_EQ(report.lines()[0].detail,
+            "1 of 12 values differ; max abs 0.001 at point 2 component 2 (A 0, B 0.001); "
+            "max rel 1 at point 2 component 2");
   CompareReport loose("a", "b");
   diff_frames(dir.path() / "a", dir.path() / "b", {0, 2e-3}, loose);
   EXPECT_TRUE(loose.identical());
@@ -142,7 +145,8 @@ TEST(VtmFrames, CapsTheFramesReportedPerSeries) {
   EXPECT_EQ(report.differing(Section::Frames), static_cast<std::size_t>(frames));
   std::ostringstream out;
   report.print(out, {});
-  EXPECT_NE(out.str().find("block level_0 point array displacement: and 5 more frames differ"), std::string::npos)
+  EXPECT_NE(out.str().find("block level_0 point array displacement: and 5 more frames differ"),
+            std::string::npos)
       << out.str();
 }
 

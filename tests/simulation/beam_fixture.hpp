@@ -1,9 +1,12 @@
 #pragma once
 // The cantilever of validation.md §2: 0.1 x 0.02 x 0.02 m, E = 1e6 Pa, ν = 0.3, ρ = 1000,
 // face x = 0 clamped, gravity -z. Structured Kuhn meshes n x n/5 x n/5.
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include "mesh/box_mesh.hpp"
+#include "mesh/mesh_reader.hpp"
 #include "simulation/level_simulation.hpp"
 
 namespace mrsim::testing {
@@ -13,6 +16,13 @@ inline constexpr double kE = 1.0e6, kNu = 0.3;
 
 inline TetMesh beam_mesh(int nx) {
   return make_box_mesh(Vec3(0, 0, 0), Vec3(kBeamL, kBeamH, kBeamH), nx, nx / 5, nx / 5);
+}
+
+/// Level k of the bundled three-level beam (scenarios/meshes/beam_L<k>.vtu, gmsh, metres).
+inline TetMesh bundled_beam_level(int level) {
+  return read_tet_mesh(std::filesystem::path(MRSIM_SOURCE_DIR) / "scenarios" / "meshes" /
+                           ("beam_L" + std::to_string(level) + ".vtu"),
+                       LengthUnit::Metre);
 }
 
 inline LevelSetup beam_setup(const TetMesh& mesh, Integrator integ, double dt,
@@ -30,16 +40,20 @@ inline LevelSetup beam_setup(const TetMesh& mesh, Integrator integ, double dt,
   return s;
 }
 
-/// Mean uz over the nodes of the tip face x = L.
-inline double tip_deflection(const LevelSimulation& sim, const TetMesh& mesh) {
+/// Mean uz over the nodes of the tip face x = L (m; negative when the beam sags).
+inline double tip_uz(const PointState& state, const TetMesh& mesh) {
   double sum = 0;
   int n = 0;
   for (size_t i = 0; i < mesh.points.size(); ++i)
-    if (mesh.points[i].x() > kBeamL - 1e-12) {
-      sum += sim.state().u[i].z();
+    if (mesh.points[i].x() > kBeamL - 1e-9) {
+      sum += state.u[i].z();
       ++n;
     }
   return sum / n;
+}
+
+inline double tip_deflection(const LevelSimulation& sim, const TetMesh& mesh) {
+  return tip_uz(sim.state(), mesh);
 }
 
 /// Mean value and frequency of an oscillating signal sampled every dt, measured over the

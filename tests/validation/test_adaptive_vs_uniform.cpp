@@ -35,17 +35,6 @@ struct Curves {
   double dt = 0;
 };
 
-double tip(const PointState& s, const TetMesh& mesh) {
-  double sum = 0;
-  int n = 0;
-  for (size_t i = 0; i < mesh.points.size(); ++i)
-    if (mesh.points[i].x() > kBeamL - 1e-9) {
-      sum -= s.u[i].z();
-      ++n;
-    }
-  return sum / n;
-}
-
 Scenario beam_adaptive(const std::vector<std::string>& overrides) {
   return load_scenario(std::filesystem::path(MRSIM_SOURCE_DIR) / "scenarios" / "beam_adaptive.yaml",
                        overrides);
@@ -82,8 +71,8 @@ Curves run_both(const Scenario& sc) {
       uniform.advance(chunk);
       sim.fill_inactive();
       c.t.push_back(sim.time());
-      c.adaptive.push_back(tip(sim.state(2), meshes[2]));
-      c.uniform.push_back(tip(uniform.state(), meshes[2]));
+      c.adaptive.push_back(-tip_uz(sim.state(2), meshes[2]));
+      c.uniform.push_back(-tip_uz(uniform.state(), meshes[2]));
     }
     adapt.update(sim, frame, events);
     std::size_t total = 0;
@@ -99,8 +88,7 @@ Curves run_both(const Scenario& sc) {
 }
 
 validation::Check check(const std::string& id, const std::string& title,
-                        const std::string& quantity, double measured, double lower,
-                        double upper) {
+                        const std::string& quantity, double measured, double lower, double upper) {
   validation::Check c;
   c.id = id;
   c.group = "Adaptive vs uniform";
@@ -148,11 +136,12 @@ TEST(AdaptiveVsUniform, AdaptiveBeamFollowsTheFinestLevelAlone) {
   const double peak = peak_value(c.uniform);
   const double dstatic = a.mean / u.mean - 1, df = a.frequency / u.frequency - 1;
   const double active = static_cast<double>(c.max_fine_active) / c.fine_points;
-  std::printf("adaptive vs L2 alone: static %.4e / %.4e m (%+.2f %%), f1 %.4f / %.4f Hz (%+.2f "
-              "%%), max deviation %.3f of the peak %.4e m; finest points active at most %zu of "
-              "%zu (all levels %zu); %d splits, %d merges\n", a.mean, u.mean, 100 * dstatic,
-              a.frequency, u.frequency, 100 * df, worst / peak, peak, c.max_fine_active,
-              c.fine_points, c.max_total_active, c.splits, c.merges);
+  std::printf(
+      "adaptive vs L2 alone: static %.4e / %.4e m (%+.2f %%), f1 %.4f / %.4f Hz (%+.2f "
+      "%%), max deviation %.3f of the peak %.4e m; finest points active at most %zu of "
+      "%zu (all levels %zu); %d splits, %d merges\n",
+      a.mean, u.mean, 100 * dstatic, a.frequency, u.frequency, 100 * df, worst / peak, peak,
+      c.max_fine_active, c.fine_points, c.max_total_active, c.splits, c.merges);
   ASSERT_GE(a.periods, 8);
   ASSERT_GE(u.periods, 8);
   EXPECT_NEAR(df, 0, 0.09);
@@ -174,8 +163,9 @@ TEST(AdaptiveVsUniform, AdaptiveBeamFollowsTheFinestLevelAlone) {
                 "%.4f Hz (adaptive / L2 alone)",
                 c.max_fine_active, c.fine_points, 100 * active, c.max_total_active, c.splits,
                 c.merges, sc.time.duration, a.mean, u.mean, a.frequency, u.frequency);
-  const std::string source = "validation.md §2.3 suggested tolerances at 4 across (the finest "
-                             "level's own error: f1 +9 %, deflection -20 %)";
+  const std::string source =
+      "validation.md §2.3 suggested tolerances at 4 across (the finest "
+      "level's own error: f1 +9 %, deflection -20 %)";
 
   validation::Check cf = check("adaptive_vs_uniform_f1",
                                "Beam, adaptive 3 levels (beam_adaptive.yaml) vs L2 alone: f1",
@@ -196,8 +186,8 @@ TEST(AdaptiveVsUniform, AdaptiveBeamFollowsTheFinestLevelAlone) {
 
   validation::Check cd = check("adaptive_vs_uniform_max_deviation",
                                "Beam, adaptive 3 levels vs L2 alone: largest tip difference "
-                               "over 1 s", "max |w_adaptive - w_L2| / peak w_L2", worst / peak,
-                               0, 1.0);
+                               "over 1 s",
+                               "max |w_adaptive - w_L2| / peak w_L2", worst / peak, 0, 1.0);
   cd.reference_source = "no analytic reference: both runs start from rest under sudden gravity";
   cd.tolerance = "below one peak (the curves may be out of phase: see note)";
   const size_t first_frame = kChunks - 1;
@@ -218,8 +208,9 @@ TEST(AdaptiveVsUniform, AdaptiveBeamFollowsTheFinestLevelAlone) {
   ch.group = "Beam levels: first bending frequency";
   ch.unit = "Hz";
   ch.reference = 10.855;
-  ch.reference_source = "validation.md §2.3 row 'gmsh h = 5 mm' (lumped f1 10.855 Hz) and "
-                        "'at 4 across f1 +9 %', as for L2 alone";
+  ch.reference_source =
+      "validation.md §2.3 row 'gmsh h = 5 mm' (lumped f1 10.855 Hz) and "
+      "'at 4 across f1 +9 %', as for L2 alone";
   ch.tolerance = "-1 % / +9 % x (4/across)^2 of the 3-D 10.001 Hz (L2's band)";
   ch.note = cost;
   validation::record(ch);

@@ -26,8 +26,8 @@ namespace {
 
 constexpr double kThreeD = 10.001;  // Hz, f1 of C3D10 h = 2.5 mm (validation.md §2.2, §2.3)
 constexpr double kThreeDDeflection = 3.7618e-3;  // m, gravity, same C3D10 run (§2.3)
-constexpr double kDuration = 1.2;   // s: 12 or more periods of f1
-constexpr int kSample = 25;         // steps per sample of the series
+constexpr double kDuration = 1.2;                // s: 12 or more periods of f1
+constexpr int kSample = 25;                      // steps per sample of the series
 
 struct BeamLevel {
   int level = 0;
@@ -52,9 +52,7 @@ double mean_edge(const TetMesh& mesh) {
 BeamLevel load_level(int level) {
   BeamLevel b;
   b.level = level;
-  b.mesh = read_tet_mesh(std::filesystem::path(MRSIM_SOURCE_DIR) / "scenarios" / "meshes" /
-                             ("beam_L" + std::to_string(level) + ".vtu"),
-                         LengthUnit::Metre);
+  b.mesh = bundled_beam_level(level);
   b.shortest = shortest_edge(b.mesh);
   b.mean_edge = mean_edge(b.mesh);
   b.across = kBeamH / (5e-3 * std::cbrt(1787.0 / static_cast<double>(b.mesh.tets.size())));
@@ -82,21 +80,25 @@ Band f1_band(double across) {
   if (across >= 3) {
     b.upper = kThreeD * (1 + 0.09 * scale(4));
     b.reference = 10.855;
-    b.source = "validation.md §2.3 row 'gmsh h = 5 mm' (1787 tets; lumped f1 10.855 Hz, §2.2) "
-               "and suggested tolerance 'at 4 across f1 +9 %'";
+    b.source =
+        "validation.md §2.3 row 'gmsh h = 5 mm' (1787 tets; lumped f1 10.855 Hz, §2.2) "
+        "and suggested tolerance 'at 4 across f1 +9 %'";
     b.tolerance = "-1 % / +9 % x (4/across)^2 of the 3-D 10.001 Hz";
   } else if (across >= 1.5 && 0.5 * scale(2) < 0.9) {
     b.upper = kThreeD / std::sqrt(1 - 0.5 * scale(2));
     b.reference = 12.711;
-    b.source = "validation.md §2.3 row 'gmsh h = 10 mm' (254 tets, 12.711 Hz) and suggested "
-               "tolerance 'at about 2 across only order of magnitude (-50 %)'";
-    b.tolerance = "-1 % / deflection -50 % x (2/across)^2 -> f1 x 1/sqrt(1 - that) of the 3-D "
-                  "10.001 Hz";
+    b.source =
+        "validation.md §2.3 row 'gmsh h = 10 mm' (254 tets, 12.711 Hz) and suggested "
+        "tolerance 'at about 2 across only order of magnitude (-50 %)'";
+    b.tolerance =
+        "-1 % / deflection -50 % x (2/across)^2 -> f1 x 1/sqrt(1 - that) of the 3-D "
+        "10.001 Hz";
   } else {
     b.upper = 10 * kThreeD;
     b.reference = kThreeD;
-    b.source = "validation.md §2.3: coarser than every row (2 across: 'only order of "
-               "magnitude'); 3-D value C3D10 h = 2.5 mm";
+    b.source =
+        "validation.md §2.3: coarser than every row (2 across: 'only order of "
+        "magnitude'); 3-D value C3D10 h = 2.5 mm";
     b.tolerance = "one-sided: above -1 % of the 3-D value, below 10x (order of magnitude)";
   }
   return b;
@@ -107,17 +109,6 @@ struct LevelRun {
   Oscillation o;
   double dt = 0;
 };
-
-double tip(const LevelSimulation& sim, const TetMesh& mesh) {
-  double sum = 0;
-  int n = 0;
-  for (size_t i = 0; i < mesh.points.size(); ++i)
-    if (mesh.points[i].x() > kBeamL - 1e-9) {
-      sum -= sim.state().u[i].z();
-      ++n;
-    }
-  return sum / n;
-}
 
 // Sudden gravity, face x = 0 clamped, Cauchy strain, modified Euler; strain-rate damping ψ
 // (φ = 0) as in scenarios/beam_adaptive.yaml when psi > 0.
@@ -131,7 +122,7 @@ LevelRun run(const TetMesh& mesh, double dt, double psi) {
   r.w.reserve(steps);
   for (int k = 0; k < steps; ++k) {
     sim.advance(1);
-    r.w.push_back(tip(sim, mesh));
+    r.w.push_back(-tip_deflection(sim, mesh));
   }
   r.o = measure_oscillation(r.w, dt);
   return r;
@@ -192,11 +183,12 @@ TEST(BeamLevelsFrequency, EachLevelAloneIsInItsLockingBand) {
     const BeamLevel& b = r.levels[l];
     const Oscillation& o = r.undamped[l].o;
     const Band band = f1_band(b.across);
-    std::printf("beam L%d: %zu tets, %zu points, shortest edge %.2f mm, mean edge %.2f mm, "
-                "%.2f across; f1 %.4f Hz (%.3f of 3-D) over %d periods, static %.4e m; band "
-                "[%.3f, %.3f] Hz\n", l, b.mesh.tets.size(), b.mesh.points.size(),
-                1e3 * b.shortest, 1e3 * b.mean_edge, b.across, o.frequency,
-                o.frequency / kThreeD, o.periods, o.mean, band.lower, band.upper);
+    std::printf(
+        "beam L%d: %zu tets, %zu points, shortest edge %.2f mm, mean edge %.2f mm, "
+        "%.2f across; f1 %.4f Hz (%.3f of 3-D) over %d periods, static %.4e m; band "
+        "[%.3f, %.3f] Hz\n",
+        l, b.mesh.tets.size(), b.mesh.points.size(), 1e3 * b.shortest, 1e3 * b.mean_edge, b.across,
+        o.frequency, o.frequency / kThreeD, o.periods, o.mean, band.lower, band.upper);
     EXPECT_GE(o.periods, 10) << l;
     EXPECT_GE(o.frequency, band.lower) << l;
     EXPECT_LE(o.frequency, band.upper) << l;
@@ -250,8 +242,9 @@ validation::Check spread_check(const std::string& id, const std::string& title, 
   c.quantity = "(max - min) / mean of f1 across levels";
   c.measured = measured;
   c.reference = 0;  // [DDCB01]: "nearly unchanged"
-  c.reference_source = "[DDCB01] claim (method.md §0.1); bound from the per-level §2.3 bands "
-                       "(validation.md §2.3 suggested tolerances)";
+  c.reference_source =
+      "[DDCB01] claim (method.md §0.1); bound from the per-level §2.3 bands "
+      "(validation.md §2.3 suggested tolerances)";
   c.lower = 0;
   c.upper = upper;
   return c;
@@ -280,10 +273,10 @@ TEST(BeamLevelsFrequency, DampedModesAcrossLevelsSpreadAsTheLockingBandsAllow) {
   const double spread = relative_spread(f), damped_spread = relative_spread(fd);
   const double spread12 = relative_spread({f[1], f[2]});
   const double bound = widest_spread(bands), bound12 = widest_spread({bands[1], bands[2]});
-  std::printf("f1 across levels L0/L1/L2: %.4f / %.4f / %.4f Hz, damped (psi = 2) %.4f / %.4f / "
-              "%.4f Hz; spread %.3f (damped %.3f, bound %.3f); L1-L2 spread %.3f (bound %.3f)\n",
-              f[0], f[1], f[2], fd[0], fd[1], fd[2], spread, damped_spread, bound, spread12,
-              bound12);
+  std::printf(
+      "f1 across levels L0/L1/L2: %.4f / %.4f / %.4f Hz, damped (psi = 2) %.4f / %.4f / "
+      "%.4f Hz; spread %.3f (damped %.3f, bound %.3f); L1-L2 spread %.3f (bound %.3f)\n",
+      f[0], f[1], f[2], fd[0], fd[1], fd[2], spread, damped_spread, bound, spread12, bound12);
   EXPECT_LE(spread, bound);
   EXPECT_LE(spread12, bound12);
   EXPECT_NEAR(damped_spread, spread, 0.01);
@@ -291,9 +284,11 @@ TEST(BeamLevelsFrequency, DampedModesAcrossLevelsSpreadAsTheLockingBandsAllow) {
 
   validation::Check c = spread_check("beam_levels_damped_spread",
                                      "Spread of the damped f1 (psi = 2 Pa.s) across the three "
-                                     "bundled beam levels, each alone", damped_spread, bound);
-  c.tolerance = "below the widest spread the per-level §2.3 bands allow (L0 has an order-of-"
-                "magnitude band only, so this bound is loose)";
+                                     "bundled beam levels, each alone",
+                                     damped_spread, bound);
+  c.tolerance =
+      "below the widest spread the per-level §2.3 bands allow (L0 has an order-of-"
+      "magnitude band only, so this bound is loose)";
   char note[400];
   std::snprintf(note, sizeof note,
                 "damped f = %.3f / %.3f / %.3f Hz (L0/L1/L2); undamped spread %.3f. The claim "
@@ -307,17 +302,20 @@ TEST(BeamLevelsFrequency, DampedModesAcrossLevelsSpreadAsTheLockingBandsAllow) {
 
   validation::Check c3 = spread_check("beam_levels_f1_spread",
                                       "Spread of f1 across the three bundled beam levels, each "
-                                      "alone, undamped", spread, bound);
+                                      "alone, undamped",
+                                      spread, bound);
   c3.tolerance = c.tolerance;
-  std::snprintf(note, sizeof note, "f1 = %.3f / %.3f / %.3f Hz (L0/L1/L2); series in "
-                "beam_level_f1_L0..L2.csv", f[0], f[1], f[2]);
+  std::snprintf(note, sizeof note,
+                "f1 = %.3f / %.3f / %.3f Hz (L0/L1/L2); series in "
+                "beam_level_f1_L0..L2.csv",
+                f[0], f[1], f[2]);
   c3.note = note;
   validation::record(c3);
 
   validation::Check c12 = spread_check("beam_levels_f1_spread_L1_L2",
                                        "Spread of f1 between beam levels L1 and L2 (the levels "
-                                       "§2.3 has rows for), each alone, undamped", spread12,
-                                       bound12);
+                                       "§2.3 has rows for), each alone, undamped",
+                                       spread12, bound12);
   c12.tolerance = "below the widest spread the L1 and L2 bands of §2.3 allow";
   std::snprintf(note, sizeof note,
                 "§2.3's own rows for meshes of these classes (gmsh 10 mm and 5 mm, lumped) "

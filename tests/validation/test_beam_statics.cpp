@@ -31,11 +31,12 @@ TEST(BeamValidation, SuddenGravityOscillatesAboutTheStaticDeflectionAtF1) {
               o.mean, o.mean / kThreeD, o.frequency, o.periods);
   // §2.3 table, structured 20x4x4 (C3D4, same mesh kind): 2.9861e-3 m = 0.794 of 3-D, inside
   // the "-20 % at 4 across" band. The whole-period mean is good to ~0.5 % (higher modes).
-  validation::Series series{"t (s)", "tip deflection -u_z (m)", {"t_s", "mrsim_m", "calculix_static_m"},
-                            {}, "line"};
+  validation::Series series{
+      "t (s)", "tip deflection -u_z (m)", {"t_s", "mrsim_m", "calculix_static_m"}, {}, "line"};
   for (size_t k = 0; k < w.size(); k += 100)
     series.rows.push_back({dt * static_cast<double>(k + 1), w[k], 2.9861e-3});
-  validation::record({"beam_static_20x4x4", "Beam", "Cantilever under sudden gravity, undamped: "
+  validation::record({"beam_static_20x4x4", "Beam",
+                      "Cantilever under sudden gravity, undamped: "
                       "mean tip deflection over whole periods (structured 20x4x4, 1920 tets)",
                       "tip deflection", "m", o.mean, 2.9861e-3,
                       "validation.md §2.3, CalculiX C3D4 on the same structured mesh "
@@ -43,7 +44,8 @@ TEST(BeamValidation, SuddenGravityOscillatesAboutTheStaticDeflectionAtF1) {
                       0.99 * 2.9861e-3, 1.01 * 2.9861e-3, "±1 %",
                       "the whole-period mean is good to ~0.5 % (higher modes)"},
                      &series);
-  validation::record({"beam_f1_20x4x4", "Beam", "Cantilever under sudden gravity: period of the "
+  validation::record({"beam_f1_20x4x4", "Beam",
+                      "Cantilever under sudden gravity: period of the "
                       "tip oscillation (structured 20x4x4)",
                       "f1 (vertical bending)", "Hz", o.frequency, 11.624,
                       "validation.md §2.3, CalculiX C3D4 same mesh (the Kuhn split's vertical "
@@ -72,8 +74,8 @@ TEST(BeamValidation, DampedBeamRunToRestMatchesTheStaticBand) {
   LevelSimulation sim(mesh, setup);
   double previous = 0, w = 0;
   int steps = 0;
-  validation::Series series{"t (s)", "tip deflection -u_z (m)", {"t_s", "mrsim_m", "calculix_static_m"},
-                            {}, "line"};
+  validation::Series series{
+      "t (s)", "tip deflection -u_z (m)", {"t_s", "mrsim_m", "calculix_static_m"}, {}, "line"};
   for (; steps < 400000; steps += 2000) {
     sim.advance(2000);
     w = -tip_deflection(sim, mesh);
@@ -87,7 +89,8 @@ TEST(BeamValidation, DampedBeamRunToRestMatchesTheStaticBand) {
   // §2.3: structured 10x2x2 (2 across) gives 1.9500e-3 m = 0.518 of 3-D ("order of magnitude,
   // -50 %" at 2 across). CalculiX C3D4 on this same structured split: 1.9500e-3 m; a damped
   // explicit run driven to rest should reproduce a linear static solve (§2.3): within 0.5 %.
-  validation::record({"beam_static_10x2x2", "Beam", "Cantilever under gravity, damped to rest "
+  validation::record({"beam_static_10x2x2", "Beam",
+                      "Cantilever under gravity, damped to rest "
                       "(β = 2.5 ms stiffness damping; structured 10x2x2, 240 tets)",
                       "tip deflection", "m", w, 1.95e-3,
                       "validation.md §2.3, CalculiX C3D4 linear static on the same mesh "

@@ -55,7 +55,8 @@ TEST(FreeBody, LinearMomentumConservedToRoundOff) {
 
 TEST(FreeBody, AngularMomentumConservedForGreenWithSymplecticEuler) {
   const TetMesh mesh = cube();
-  LevelSimulation sim(mesh, free_body(StrainMeasure::GreenLagrange, Integrator::ModifiedEuler, 2e-5));
+  LevelSimulation sim(mesh,
+                      free_body(StrainMeasure::GreenLagrange, Integrator::ModifiedEuler, 2e-5));
   const Vec3 l0 = angular_momentum(sim.state(), sim.model().mass, mesh);
   validation::Series series{"t (s)", "|L(t) - L(0)| / |L(0)|", {"t_s", "drift"}, {}, "line"};
   double worst = 0;
@@ -101,7 +102,8 @@ TEST(FreeBody, SpinningBodyKeepsItsSizeWithGreenButBalloonsWithCauchy) {
   // initial rotation and grows like sqrt(1 + θ²) (θ ≈ 0.92 rad here), while Green–Lagrange
   // rotates it rigidly.
   const TetMesh mesh = cube();
-  LevelSimulation green(mesh, free_body(StrainMeasure::GreenLagrange, Integrator::ModifiedEuler, 2e-5));
+  LevelSimulation green(mesh,
+                        free_body(StrainMeasure::GreenLagrange, Integrator::ModifiedEuler, 2e-5));
   LevelSimulation cauchy(mesh, free_body(StrainMeasure::Cauchy, Integrator::ModifiedEuler, 2e-5));
   const double r0 = radius_of_gyration(green, mesh);
   green.advance(10000);
@@ -109,9 +111,9 @@ TEST(FreeBody, SpinningBodyKeepsItsSizeWithGreenButBalloonsWithCauchy) {
   const double g = radius_of_gyration(green, mesh) / r0, c = radius_of_gyration(cauchy, mesh) / r0;
   validation::record({"free_body_spin_green", "Free body",
                       "Spinning cube after 0.2 s (θ ≈ 0.92 rad): radius of gyration / initial, "
-                      "Green-Lagrange", "ratio", "", g, 1.0,
-                      "validation.md §2.6 (rigid rotation costs no energy)", 0.99, 1.01, "±1 %",
-                      ""});
+                      "Green-Lagrange",
+                      "ratio", "", g, 1.0, "validation.md §2.6 (rigid rotation costs no energy)",
+                      0.99, 1.01, "±1 %", ""});
   validation::record({"free_body_spin_cauchy", "Free body",
                       "The same with Cauchy strain: the expected failure of small strain", "ratio",
                       "", c, std::sqrt(1 + 0.92 * 0.92),

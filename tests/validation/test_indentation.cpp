@@ -62,16 +62,16 @@ TEST(Indentation, HertzSphereForceGrowsAsDepthToTheThreeHalves) {
   const IndentedBlock block;
   const TetMesh mesh = block.mesh();
   const double R = 5e-3, d_max = 5e-4, t_load = 0.5;
-  HierarchySetup s = block.setup(mesh, vertical_tool({ToolShapeKind::Sphere, R, 0}, R + 2e-5,
-                                                     R - d_max, t_load));
+  HierarchySetup s =
+      block.setup(mesh, vertical_tool({ToolShapeKind::Sphere, R, 0}, R + 2e-5, R - d_max, t_load));
   s.dt = courant_dt(mesh, s.law);
   HierarchicalSimulation sim({&mesh}, s);
   const std::vector<Sample> samples = indent(sim, s.dt, t_load, 50, R);
   ASSERT_GT(samples.size(), 50u);
   const double slope = log_slope(samples, 2e-4, 5e-4);
   double worst = 0, worst_signed = 0, deepest = 0;
-  validation::Series series{"depth d (m)", "force on the tool (N)",
-                            {"depth_m", "mrsim_N", "hertz_N"}, {}, "loglog"};
+  validation::Series series{
+      "depth d (m)", "force on the tool (N)", {"depth_m", "mrsim_N", "hertz_N"}, {}, "loglog"};
   for (const Sample& x : samples) {
     deepest = std::max(deepest, x.penetration);
     series.rows.push_back({x.depth, x.force, hertz_force(block, R, x.depth)});
@@ -81,26 +81,27 @@ TEST(Indentation, HertzSphereForceGrowsAsDepthToTheThreeHalves) {
   }
   const Sample& last = samples.back();
   const double dent = last.depth - last.penetration;
-  std::printf("Hertz: slope %.3f on d in [0.2, 0.5] mm; F/F_hertz(d) worst %.3f for d >= 0.25 mm; "
-              "at d = %.3f mm: F = %.4e N; against the dent made (d - penetration = %.3f mm): "
-              "%.3f; deepest penetration %.4f mm = %.2f h0\n",
-              slope, 1 + worst_signed, last.depth * 1e3, last.force, dent * 1e3,
-              last.force / hertz_force(block, R, dent), deepest * 1e3, deepest / block.h0);
+  std::printf(
+      "Hertz: slope %.3f on d in [0.2, 0.5] mm; F/F_hertz(d) worst %.3f for d >= 0.25 mm; "
+      "at d = %.3f mm: F = %.4e N; against the dent made (d - penetration = %.3f mm): "
+      "%.3f; deepest penetration %.4f mm = %.2f h0\n",
+      slope, 1 + worst_signed, last.depth * 1e3, last.force, dent * 1e3,
+      last.force / hertz_force(block, R, dent), deepest * 1e3, deepest / block.h0);
   const std::string mesh_text = "graded block 40x40x20 mm, 0.4 mm cells under the tool, " +
                                 std::to_string(mesh.tets.size()) + " tets";
-  validation::record({"indentation_hertz_slope", "Indentation",
-                      "Sphere R = 5 mm to 0.5 mm: log-log slope of F(d) on [0.2, 0.5] mm (" +
-                          mesh_text + ")",
-                      "slope", "", slope, 1.5, "validation.md §2.9 (Hertz: F ∝ d^3/2)", 1.35,
-                      1.65, "±0.15", "contact radius 2.5-4 cells"},
-                     &series);
+  validation::record(
+      {"indentation_hertz_slope", "Indentation",
+       "Sphere R = 5 mm to 0.5 mm: log-log slope of F(d) on [0.2, 0.5] mm (" + mesh_text + ")",
+       "slope", "", slope, 1.5, "validation.md §2.9 (Hertz: F ∝ d^3/2)", 1.35, 1.65, "±0.15",
+       "contact radius 2.5-4 cells"},
+      &series);
   validation::record({"indentation_hertz_force", "Indentation",
                       "Sphere R = 5 mm: worst F / F_Hertz(d) for d in [0.25, 0.5] mm", "ratio", "",
-                      1 + worst_signed, 1.0, "validation.md §2.9 (Hertz, ±15 % sanity bound)",
-                      0.85, 1.15, "±15 %", ""});
+                      1 + worst_signed, 1.0, "validation.md §2.9 (Hertz, ±15 % sanity bound)", 0.85,
+                      1.15, "±15 %", ""});
   validation::record({"indentation_sphere_penetration", "Indentation",
-                      "Sphere: deepest penalty penetration, in cells of the finest mesh", "h0",
-                      "", deepest / block.h0, 0.0, "docs/contact.md (penalty 'auto')", 0, 0.25,
+                      "Sphere: deepest penalty penetration, in cells of the finest mesh", "h0", "",
+                      deepest / block.h0, 0.0, "docs/contact.md (penalty 'auto')", 0, 0.25,
                       "< 0.25 cell", ""});
   EXPECT_NEAR(slope, 1.5, 0.15);
   EXPECT_LT(worst, 0.15);
@@ -112,26 +113,27 @@ TEST(Indentation, FlatPunchForceIsWithinFifteenPercentOfBoussinesq) {
   const IndentedBlock block;
   const TetMesh mesh = block.mesh();
   const double a = 2e-3, d = 1e-4, t_load = 0.3, t_end = 0.4;
-  HierarchySetup s = block.setup(
-      mesh, vertical_tool({ToolShapeKind::FlatCylinder, a, 5e-3}, 2e-5, -d, t_load));
+  HierarchySetup s =
+      block.setup(mesh, vertical_tool({ToolShapeKind::FlatCylinder, a, 5e-3}, 2e-5, -d, t_load));
   s.dt = courant_dt(mesh, s.law);
   HierarchicalSimulation sim({&mesh}, s);
   const std::vector<Sample> samples = indent(sim, s.dt, t_end, 50, 0.0);
   const Sample& last = samples.back();
   const double boussinesq = 2 * a * block.e_star() * d;
-  std::printf("Boussinesq: F = %.4e N, 2 a E* d = %.4e N, ratio %.3f; penetration %.4f mm; "
-              "against the dent made: %.3f\n",
-              last.force, boussinesq, last.force / boussinesq, last.penetration * 1e3,
-              last.force / (2 * a * block.e_star() * (d - last.penetration)));
-  validation::Series series{"t (s)", "force on the punch (N)", {"t_s", "mrsim_N", "boussinesq_N"},
-                            {}, "line"};
+  std::printf(
+      "Boussinesq: F = %.4e N, 2 a E* d = %.4e N, ratio %.3f; penetration %.4f mm; "
+      "against the dent made: %.3f\n",
+      last.force, boussinesq, last.force / boussinesq, last.penetration * 1e3,
+      last.force / (2 * a * block.e_star() * (d - last.penetration)));
+  validation::Series series{
+      "t (s)", "force on the punch (N)", {"t_s", "mrsim_N", "boussinesq_N"}, {}, "line"};
   for (const Sample& x : samples)
     series.rows.push_back({x.time, x.force, 2 * a * block.e_star() * x.depth});
   validation::record({"indentation_punch", "Indentation",
                       "Flat punch a = 2 mm pressed 0.1 mm, held: F / (2 a E* d)", "ratio", "",
                       last.force / boussinesq, 1.0,
-                      "validation.md §2.9 (Boussinesq half-space, ±15 % sanity bound)", 0.85,
-                      1.15, "±15 %", "finite block on a fixed base: stiffer than a half-space"},
+                      "validation.md §2.9 (Boussinesq half-space, ±15 % sanity bound)", 0.85, 1.15,
+                      "±15 %", "finite block on a fixed base: stiffer than a half-space"},
                      &series);
   EXPECT_NEAR(last.force / boussinesq, 1.0, 0.15);
   EXPECT_LT(last.penetration, 0.25 * block.h0);

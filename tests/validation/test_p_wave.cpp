@@ -23,7 +23,7 @@ namespace {
 constexpr double kE = 1.0e6, kNu = 0.3, kRho = 1000;
 constexpr double kLength = 0.4, kSide = 2e-3;  // m: 200 cells of 2 mm, one cell across
 constexpr int kCells = 200;
-constexpr double kPulse = 1e-3;                // s: pulse length c_p T = 36.7 mm = 18 cells
+constexpr double kPulse = 1e-3;                     // s: pulse length c_p T = 36.7 mm = 18 cells
 constexpr double kStation1 = 0.1, kStation2 = 0.3;  // m
 constexpr double kDuration = 0.012;  // s: the pulse has passed station 2 (9.2 ms); the echo
                                      // from the free far end reaches it at 13.6 ms
@@ -83,8 +83,7 @@ void apply_rollers(PointState& s) {
 }
 
 Stations run_bar(bool rollers) {
-  const TetMesh mesh =
-      make_box_mesh(Vec3(0, 0, 0), Vec3(kLength, kSide, kSide), kCells, 1, 1);
+  const TetMesh mesh = make_box_mesh(Vec3(0, 0, 0), Vec3(kLength, kSide, kSide), kCells, 1, 1);
   HierarchySetup setup;
   setup.law = law();
   setup.integrator = Integrator::ModifiedEuler;
@@ -120,8 +119,9 @@ validation::Check wave_check(const std::string& id, const std::string& title, do
   c.reference = reference;
   c.lower = (1 - kBand) * reference;
   c.upper = (1 + kBand) * reference;
-  c.tolerance = "±3 % (\"a few percent\" of dispersion at 10 elements per wavelength, §2.4; "
-                "here 18 cells per pulse length)";
+  c.tolerance =
+      "±3 % (\"a few percent\" of dispersion at 10 elements per wavelength, §2.4; "
+      "here 18 cells per pulse length)";
   return c;
 }
 
@@ -131,10 +131,11 @@ validation::Check wave_check(const std::string& id, const std::string& title, do
 // or rollers that leak) give the bar speed, 13.8 % lower, far outside the band.
 TEST(PWave, RollerSupportedBarCarriesThePWaveSpeed) {
   const Stations rollers = run_bar(true), free_sides = run_bar(false);
-  std::printf("P wave, rollers: arrivals %.4f / %.4f ms, c = %.3f m/s (c_p %.3f, %+.2f %%); "
-              "free sides: c = %.3f m/s (c_bar %.3f, %+.2f %%)\n", 1e3 * rollers.t1,
-              1e3 * rollers.t2, rollers.c, cp(), 100 * (rollers.c / cp() - 1), free_sides.c,
-              c_bar(), 100 * (free_sides.c / c_bar() - 1));
+  std::printf(
+      "P wave, rollers: arrivals %.4f / %.4f ms, c = %.3f m/s (c_p %.3f, %+.2f %%); "
+      "free sides: c = %.3f m/s (c_bar %.3f, %+.2f %%)\n",
+      1e3 * rollers.t1, 1e3 * rollers.t2, rollers.c, cp(), 100 * (rollers.c / cp() - 1),
+      free_sides.c, c_bar(), 100 * (free_sides.c / c_bar() - 1));
   EXPECT_NEAR(rollers.c, cp(), kBand * cp());
   // The check separates the two speeds: c_bar is 13.8 % under c_p.
   EXPECT_GT(rollers.c, c_bar() * (1 + 3 * kBand));
@@ -145,13 +146,14 @@ TEST(PWave, RollerSupportedBarCarriesThePWaveSpeed) {
   s.y_label = "mean axial velocity of the station's layer (m/s)";
   s.columns = {"t", "rollers x=0.1", "rollers x=0.3", "free sides x=0.1", "free sides x=0.3"};
   for (size_t k = 0; k < rollers.t.size(); ++k)
-    s.rows.push_back({rollers.t[k], rollers.v1[k], rollers.v2[k], free_sides.v1[k],
-                      free_sides.v2[k]});
-  validation::Check c = wave_check("p_wave_speed_rollers",
-                                   "P wave in a 0.4 m bar on lateral rollers (2 mm Kuhn cells)",
-                                   rollers.c, cp());
-  c.reference_source = "validation.md §2.4: c_p = sqrt((lambda+2mu)/rho) = 36.69 m/s "
-                       "(uniaxial strain: side faces on rollers)";
+    s.rows.push_back(
+        {rollers.t[k], rollers.v1[k], rollers.v2[k], free_sides.v1[k], free_sides.v2[k]});
+  validation::Check c =
+      wave_check("p_wave_speed_rollers",
+                 "P wave in a 0.4 m bar on lateral rollers (2 mm Kuhn cells)", rollers.c, cp());
+  c.reference_source =
+      "validation.md §2.4: c_p = sqrt((lambda+2mu)/rho) = 36.69 m/s "
+      "(uniaxial strain: side faces on rollers)";
   char note[200];
   std::snprintf(note, sizeof note,
                 "c_bar = sqrt(E/rho) = %.2f m/s is %.1f %% lower: outside the band, the check "
@@ -163,8 +165,9 @@ TEST(PWave, RollerSupportedBarCarriesThePWaveSpeed) {
   validation::Check b = wave_check("p_wave_speed_free_sides",
                                    "Contrast: the same bar with free sides carries the bar speed",
                                    free_sides.c, c_bar());
-  b.reference_source = "validation.md §2.4: c_bar = sqrt(E/rho) = 31.62 m/s for long waves in "
-                       "a bar with free sides (pulse length 18x the 2 mm section)";
+  b.reference_source =
+      "validation.md §2.4: c_bar = sqrt(E/rho) = 31.62 m/s for long waves in "
+      "a bar with free sides (pulse length 18x the 2 mm section)";
   b.note = "same run without the rollers; series in p_wave_speed_rollers.csv";
   validation::record(b);
 }

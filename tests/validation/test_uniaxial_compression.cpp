@@ -44,8 +44,8 @@ TetMesh jittered_block() {
   std::uniform_real_distribution<double> d(-0.2, 0.2);
   const double h = kB / 4;
   for (Vec3& p : m.points) {
-    const bool interior = p.x() > 1e-9 && p.x() < kB - 1e-9 && p.y() > 1e-9 &&
-                          p.y() < kB - 1e-9 && !on_top(p) && !on_bottom(p);
+    const bool interior = p.x() > 1e-9 && p.x() < kB - 1e-9 && p.y() > 1e-9 && p.y() < kB - 1e-9 &&
+                          !on_top(p) && !on_bottom(p);
     if (interior) p += h * Vec3(d(rng), d(rng), d(rng));
   }
   return m;
@@ -107,8 +107,9 @@ void record_force(validation::Check c, const FaceForces& r, double reference,
   c.lower = reference - kTol * std::abs(reference);
   c.upper = reference + kTol * std::abs(reference);
   c.tolerance = "relative 1e-9 (affine field: exact up to round-off)";
-  c.note = "structured 4x4x8-cell block (20x20x40 mm), interior points jittered by up to 20 % "
-           "of a cell; the exact affine displacement is imposed on every point";
+  c.note =
+      "structured 4x4x8-cell block (20x20x40 mm), interior points jittered by up to 20 % "
+      "of a cell; the exact affine displacement is imposed on every point";
   validation::record(c);
 }
 
@@ -119,8 +120,9 @@ void record_free(validation::Check c, const FaceForces& r) {
   c.unit = "";
   c.measured = r.free_worst / r.typical;
   c.reference = 0;
-  c.reference_source = "validation.md §2.5: the solution is affine, linear tets reproduce it "
-                       "exactly (patch test); lateral faces and interior are traction-free";
+  c.reference_source =
+      "validation.md §2.5: the solution is affine, linear tets reproduce it "
+      "exactly (patch test); lateral faces and interior are traction-free";
   c.lower = 0;
   c.upper = kTol;
   c.tolerance = "below 1e-9 of a typical nodal force";
@@ -138,17 +140,19 @@ TEST(UniaxialCompression, CauchyAffineFieldGivesEAEpsAndTractionFreeSides) {
   const double eps = -0.1;
   const FaceForces r = affine_forces(mesh, StrainMeasure::Cauchy, 1 - kNu * eps, 1 + eps);
   const double reference = kE * kArea * eps;
-  std::printf("uniaxial Cauchy eps = %.2f: top force %.12f N (E A eps = %.12f N), free points "
-              "%.2e of a typical nodal force %.4f N\n", eps, r.top, reference,
-              r.free_worst / r.typical, r.typical);
+  std::printf(
+      "uniaxial Cauchy eps = %.2f: top force %.12f N (E A eps = %.12f N), free points "
+      "%.2e of a typical nodal force %.4f N\n",
+      eps, r.top, reference, r.free_worst / r.typical, r.typical);
   EXPECT_NEAR(r.top, reference, kTol * std::abs(reference));
   EXPECT_LT(r.free_worst, kTol * r.typical);
   EXPECT_GT(r.free_points, 50);
-  record_force(base("uniaxial_cauchy_force",
-                    "Cauchy, 10 % squeeze of a 20x20x40 mm block: end force"),
-               r, reference, "validation.md §2.5 (linear theory F = E A eps; CalculiX -40.000 N)");
+  record_force(
+      base("uniaxial_cauchy_force", "Cauchy, 10 % squeeze of a 20x20x40 mm block: end force"), r,
+      reference, "validation.md §2.5 (linear theory F = E A eps; CalculiX -40.000 N)");
   record_free(base("uniaxial_cauchy_free_points",
-                   "Cauchy, 10 % squeeze: force on interior and lateral-face points"), r);
+                   "Cauchy, 10 % squeeze: force on interior and lateral-face points"),
+              r);
 }
 
 // SVK (green_lagrange): λ_z = 0.9, λ_x = √(1 - ν(λ_z² - 1)), P_zz A0 = E λ_z (λ_z² - 1)/2 A0.
@@ -159,15 +163,17 @@ TEST(UniaxialCompression, SvkAffineFieldGivesTheNominalStressAndTractionFreeSide
   const double lz = 0.9;
   const FaceForces r = affine_forces(mesh, StrainMeasure::GreenLagrange, svk_lateral(lz), lz);
   const double reference = svk_nominal(lz) * kArea;
-  std::printf("uniaxial SVK lambda_z = %.2f (lambda_x = %.6f): top force %.12f N (P_zz A0 = "
-              "%.12f N), free points %.2e of a typical nodal force\n", lz, svk_lateral(lz), r.top,
-              reference, r.free_worst / r.typical);
+  std::printf(
+      "uniaxial SVK lambda_z = %.2f (lambda_x = %.6f): top force %.12f N (P_zz A0 = "
+      "%.12f N), free points %.2e of a typical nodal force\n",
+      lz, svk_lateral(lz), r.top, reference, r.free_worst / r.typical);
   EXPECT_NEAR(r.top, reference, kTol * std::abs(reference));
   EXPECT_LT(r.free_worst, kTol * r.typical);
-  record_force(base("uniaxial_svk_force", "SVK, stretch 0.9 of a 20x20x40 mm block: end force"),
-               r, reference, "validation.md §2.5 (SVK: P_zz = E lz (lz^2-1)/2, lx exact)");
+  record_force(base("uniaxial_svk_force", "SVK, stretch 0.9 of a 20x20x40 mm block: end force"), r,
+               reference, "validation.md §2.5 (SVK: P_zz = E lz (lz^2-1)/2, lx exact)");
   record_free(base("uniaxial_svk_free_points",
-                   "SVK, stretch 0.9: force on interior and lateral-face points"), r);
+                   "SVK, stretch 0.9: force on interior and lateral-face points"),
+              r);
 }
 
 // §2.5: SVK softens in compression and has a limit point at λ_z = 1/√3 where dP/dλ = 0. The
@@ -183,9 +189,10 @@ TEST(UniaxialCompression, SvkEndForceHasItsLimitPointAtOneOverRootThree) {
   const double below = force(lc - h), at = force(lc), above = force(lc + h);
   const double slope = (above - below) / (2 * h * kArea) / kE;  // dP/dλ in units of E
   const double reference = h * h / 2;
-  std::printf("SVK limit point: end force %.9f / %.9f / %.9f N at lambda_z = %.3f / %.4f / "
-              "%.3f; secant dP/dlambda = %.3e E (cubic: %.3e E)\n", below, at, above, lc - h, lc,
-              lc + h, slope, reference);
+  std::printf(
+      "SVK limit point: end force %.9f / %.9f / %.9f N at lambda_z = %.3f / %.4f / "
+      "%.3f; secant dP/dlambda = %.3e E (cubic: %.3e E)\n",
+      below, at, above, lc - h, lc, lc + h, slope, reference);
   EXPECT_LT(at, below);  // the most compressive end force of the three
   EXPECT_LT(at, above);
   EXPECT_NEAR(slope, reference, kTol);
@@ -194,8 +201,9 @@ TEST(UniaxialCompression, SvkEndForceHasItsLimitPointAtOneOverRootThree) {
   c.quantity = "dP/dlambda (central difference over +-0.01) / E";
   c.measured = slope;
   c.reference = reference;
-  c.reference_source = "validation.md §2.5: SVK limit point at lambda_z = 1/sqrt(3), dP/dlambda "
-                       "= 0; the central difference of the cubic P is E h^2/2";
+  c.reference_source =
+      "validation.md §2.5: SVK limit point at lambda_z = 1/sqrt(3), dP/dlambda "
+      "= 0; the central difference of the cubic P is E h^2/2";
   c.lower = reference - kTol;
   c.upper = reference + kTol;
   c.tolerance = "±1e-9 E (slope at lambda_z = 1 is 1 E)";

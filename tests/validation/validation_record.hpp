@@ -6,11 +6,10 @@
 // column names, then rows; the first column is the abscissa). `<dir>` is $MRSIM_VALIDATION_OUT
 // or, by default, `<build>/validation`. The test still asserts on its own: the record is a
 // report, written whether the check passes or fails.
-#include <nlohmann/json.hpp>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,11 +17,11 @@
 namespace mrsim::validation {
 
 struct Check {
-  std::string id;          // file name, e.g. "beam_static_20x4x4"
-  std::string group;       // section of the report, e.g. "Beam statics"
-  std::string title;       // one line: what is checked, on which mesh
-  std::string quantity;    // e.g. "tip deflection"
-  std::string unit;        // e.g. "m", "Hz", "" for ratios
+  std::string id;        // file name, e.g. "beam_static_20x4x4"
+  std::string group;     // section of the report, e.g. "Beam statics"
+  std::string title;     // one line: what is checked, on which mesh
+  std::string quantity;  // e.g. "tip deflection"
+  std::string unit;      // e.g. "m", "Hz", "" for ratios
   double measured = 0;
   double reference = 0;
   std::string reference_source;  // e.g. "validation.md §2.3, CalculiX C3D4 same mesh"
@@ -33,11 +32,11 @@ struct Check {
 
 /// The abscissa, then the curves, for the plot of a dynamic check.
 struct Series {
-  std::string x_label;                  // e.g. "t (s)"
-  std::string y_label;                  // e.g. "tip deflection (m)"
-  std::vector<std::string> columns;     // names: x first, then one per curve
+  std::string x_label;               // e.g. "t (s)"
+  std::string y_label;               // e.g. "tip deflection (m)"
+  std::vector<std::string> columns;  // names: x first, then one per curve
   std::vector<std::vector<double>> rows;
-  std::string kind = "line";            // "line" or "loglog"
+  std::string kind = "line";  // "line" or "loglog"
 };
 
 inline std::filesystem::path record_dir() {
