@@ -169,7 +169,7 @@ void HierarchicalSimulation::run_w_cycle(std::vector<TimeLevelChange>& changes) 
         any = any || !block.points->empty();
       }
     if (!any) {
-      if (contact_ && s.tick % haptic == 0) {  // nobody kicked: the skin moves on, sampled
+      if (contact_ && s.tick > 0 && s.tick % haptic == 0) {  // nobody kicked: skin sampled
         drift_all(drifted, s.tick, frame_start, tick);
         drifted = s.tick;
         contact_->record_sample();
@@ -178,12 +178,15 @@ void HierarchicalSimulation::run_w_cycle(std::vector<TimeLevelChange>& changes) 
     }
     drift_all(drifted, s.tick, frame_start, tick);
     drifted = s.tick;
-    if (contact_) contact_->record_sample();
+    // Samples cover (frame start, frame end], as without time levels: tick 0 is the previous
+    // frame's end, sampled there (or t = 0, which a step never samples either).
+    if (contact_ && s.tick > 0) contact_->record_sample();
     stepper_->kick_step(tick);
     ++steps_;
     ta.after_step(s, changes);
   }
   drift_all(drifted, wc.ticks_per_frame(), frame_start, tick);
+  if (contact_) contact_->record_sample();  // the frame's end: the last run's last sample
   in_sub_step_ = false;
   ta.release_fields();
 }

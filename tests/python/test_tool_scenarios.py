@@ -124,7 +124,19 @@ def test_time_levels_rate(binary, source, tmp):
     with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
         t = h5["/tool/time"][:]
         f = h5["/tool/force"][:]
+        frame_t = h5["/frames/time"][:]
+        frame_f = h5["/frames/tool_force"][:, 0, :]
     gap = np.diff(t).max()
+    # Samples cover (frame start, frame end] as without time levels: every frame's end, the
+    # last one included, is sampled once. (Its force is the one before the frame boundary's
+    # splits and merges; /frames/tool_force is after them, so the two may differ slightly.)
+    at_end = [np.flatnonzero(np.abs(t - x) < 1e-9) for x in frame_t[1:]]
+    scale = np.abs(frame_f).max()
+    check(t[0] > 0 and all(len(i) == 1 for i in at_end)
+          and all(np.abs(f[i[0]] - frame_f[k + 1]).max() < 0.02 * scale
+                  for k, i in enumerate(at_end)),
+          "with time levels: one sample at every frame's end (the last frame's too, t = %.3f s), "
+          "next to the frame's force" % frame_t[-1])
     check(len(t) >= summary["steps"] and gap <= 1e-3 + 1e-12 and f[:, 2].max() > 0.5,
           "with time levels: %d samples for %d sub-steps, longest gap %.3f ms (<= 1 ms), peak %.2f N"
           % (len(t), summary["steps"], gap * 1e3, f[:, 2].max()))
