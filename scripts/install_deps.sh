@@ -8,6 +8,7 @@ PACKAGES=(
   libcli11-dev libvalijson-dev nlohmann-json3-dev libgmsh-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-h5py python3-vtk9 python3-jsonschema python3-numpy python3-matplotlib python3-yaml
+  xvfb xauth
 )
 
 missing=()
