@@ -9,6 +9,7 @@
 #include "cli/compare_command.hpp"
 #include "cli/mesh_command.hpp"
 #include "cli/progress_reporter.hpp"
+#include "cli/sweep_command.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "mrsim/version.hpp"
@@ -83,6 +84,7 @@ int run_cli(int argc, char** argv) {
   add_scenario_args(check, check_args);
   const MeshCommand mesh = add_mesh_command(app);
   const CompareCommand compare = add_compare_command(app);
+  const SweepCommand sweep = add_sweep_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -93,6 +95,7 @@ int run_cli(int argc, char** argv) {
     if (*run) return command_run(run_args);
     if (*mesh.command) return mesh.run();
     if (*compare.command) return compare.run();
+    if (*sweep.command) return sweep.run();
     return command_check(check_args);
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << '\n';

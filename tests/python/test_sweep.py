@@ -1,0 +1,186 @@
+#!/usr/bin/python3
+"""End-to-end checks of `mrsim sweep` (issue 8): a real sweep of 4 short beam cases with -j 2
+(one diverges), results.csv against each summary.json, resume (finished cases skipped,
+--retry-failed, a deleted status.json), an invalid sweep (exit 2, nothing written),
+--case K, --collect, and scripts/plot_sweep.py on the produced table."""
+import argparse
+import csv
+import glob
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+FAILURES = []
+PASSED = []
+
+
+def check(cond, what):
+    print(("ok   " if cond else "FAIL ") + what)
+    (PASSED if cond else FAILURES).append(what)
+
+
+def run(binary, *args, cwd=None):
+    return subprocess.run([binary, *args], capture_output=True, text=True, cwd=cwd, timeout=300)
+
+
+# psi = 20 with 256 steps per frame diverges within the first frame: case_0003 fails.
+SWEEP = """base: {base}
+output: out/s
+set: ["time.duration=0.04"]
+product:
+  material.damping.psi: [2, 20]
+  time.substeps: [512, 256]
+"""
+
+
+def read_rows(path):
+    with open(path, newline="") as f:
+        reader = csv.DictReader(f)
+        return reader.fieldnames, list(reader)
+
+
+def status_mtimes(folder):
+    return {os.path.basename(os.path.dirname(p)): os.stat(p).st_mtime_ns
+            for p in glob.glob(os.path.join(folder, "case_*", "status.json"))}
+
+
+def same_number(cell, value):
+    return float(cell) == float(value) if value is not None else cell == ""
+
+
+def check_row_figures(row, folder):
+    summary = json.load(open(os.path.join(folder, row["case"], "summary.json")))
+    ok = (same_number(row["max_displacement"], summary["max_displacement"])
+          and same_number(row["wall_time"], summary["wall_time"])
+          and int(row["force_evaluations"]) == sum(summary["force_evaluations"])
+          and int(row["steps"]) == summary["steps"]
+          and int(row["final_active_L0"]) == summary["final_active"][0]
+          and row["peak_tool_force"] == "")
+    check(ok, "%s: figures equal its summary.json" % row["case"])
+
+
+def test_full_sweep(binary, tmp, sweep):
+    out = os.path.join(tmp, "out", "s")
+    r = run(binary, "sweep", sweep, "-j", "2", cwd=tmp)
+    check(r.returncode == 1, "a sweep with one failed case exits 1 (got %d: %s)"
+          % (r.returncode, r.stderr.strip()[-300:]))
+    check("sweep: 4/4 done, 1 failed, 0 running" in r.stderr,
+          "progress lines on stderr: " + r.stderr.strip().splitlines()[-1][:80])
+    for name in ("sweep.yaml", "cases.csv", "results.csv"):
+        check(os.path.isfile(os.path.join(out, name)), "DIR/%s written" % name)
+    columns, rows = read_rows(os.path.join(out, "results.csv"))
+    check(columns[:6] == ["case", "status", "exit_code", "message", "param:material.damping.psi",
+                          "param:time.substeps"], "results.csv columns: %s" % columns[:6])
+    check(columns[-5:] == ["wall_time", "force_evaluations", "steps", "splits", "merges"],
+          "results.csv ends with the work counters")
+    check(len(rows) == 4, "results.csv has 4 rows")
+    params = [(r["param:material.damping.psi"], r["param:time.substeps"]) for r in rows]
+    check(params == [("2", "512"), ("2", "256"), ("20", "512"), ("20", "256")],
+          "rows in product order with their params: %s" % params)
+    check([r["status"] for r in rows] == ["done", "done", "done", "failed"],
+          "three done, the diverging one failed")
+    failed = rows[3]
+    check(failed["exit_code"] == "1" and "diverged" in failed["message"],
+          "the failure's exit code and message are recorded: " + failed["message"][:80])
+    for row in rows:
+        check_row_figures(row, out)
+    params_json = json.load(open(os.path.join(out, "case_0002", "params.json")))
+    check(params_json == {"material.damping.psi": 20, "time.substeps": 512},
+          "params.json holds the case's values")
+    status = json.load(open(os.path.join(out, "case_0003", "status.json")))
+    check(status["exit_code"] == 1 and status["wall_time"] > 0, "status.json of the failure")
+    resolved = open(os.path.join(out, "case_0001", "scenario.yaml")).read()
+    check("substeps: 256" in resolved and "duration: 0.04" in resolved,
+          "the case ran with its overrides (resolved scenario.yaml)")
+    check(os.path.isfile(os.path.join(out, "case_0003", "stderr.txt")), "stderr.txt captured")
+    return out
+
+
+def test_resume(binary, tmp, sweep, out):
+    before = status_mtimes(out)
+    r = run(binary, "sweep", sweep, "-j", "2", "-q", cwd=tmp)
+    check(r.returncode == 1 and r.stderr == "", "re-run exits 1 again, quietly")
+    check(status_mtimes(out) == before, "re-running skips every finished case (failed too)")
+    r = run(binary, "sweep", sweep, "-j", "2", "-q", "--retry-failed", cwd=tmp)
+    after = status_mtimes(out)
+    changed = sorted(k for k in after if after[k] != before[k])
+    check(r.returncode == 1 and changed == ["case_0003"],
+          "--retry-failed re-runs only the failed case: %s" % changed)
+    os.remove(os.path.join(out, "case_0001", "status.json"))
+    before = status_mtimes(out)
+    r = run(binary, "sweep", sweep, "-q", cwd=tmp)
+    after = status_mtimes(out)
+    changed = sorted(k for k in after if before.get(k) != after[k])
+    check(changed == ["case_0001"], "a case without status.json is re-run, alone: %s" % changed)
+    _, rows = read_rows(os.path.join(out, "results.csv"))
+    check(rows[1]["status"] == "done", "and results.csv lists it done again")
+
+
+def test_invalid(binary, tmp, base):
+    path = os.path.join(tmp, "bad.yaml")
+    with open(path, "w") as f:
+        f.write("base: %s\noutput: out/bad\nproduct:\n  material.lambdaa: [0, 1]\n" % base)
+    r = run(binary, "sweep", path, cwd=tmp)
+    check(r.returncode == 2 and "material.lambdaa" in r.stderr and "case_0000" in r.stderr,
+          "unknown key path: exit 2 naming the case and the key: " + r.stderr.strip()[:160])
+    check(not os.path.exists(os.path.join(tmp, "out", "bad")), "and nothing is written")
+    with open(path, "w") as f:
+        f.write("base: %s\noutput: out/bad\nzip:\n  a: [0, 1]\n  b: [1]\n" % base)
+    r = run(binary, "sweep", path, cwd=tmp)
+    check(r.returncode == 2 and "bad.yaml:5:3" in r.stderr and "same length" in r.stderr,
+          "unequal zip lists: exit 2 with line:column: " + r.stderr.strip()[:160])
+
+
+def test_case_and_collect(binary, tmp, sweep):
+    out = os.path.join(tmp, "one")
+    r = run(binary, "sweep", sweep, "-o", out, "--case", "1", "-q", cwd=tmp)
+    cases = sorted(os.path.basename(p) for p in glob.glob(os.path.join(out, "case_*")))
+    check(r.returncode == 0 and cases == ["case_0001"],
+          "--case 1 runs case 1 alone (exit %d, %s)" % (r.returncode, cases))
+    r = run(binary, "sweep", sweep, "-o", out, "--collect", cwd=tmp)
+    _, rows = read_rows(os.path.join(out, "results.csv"))
+    check(r.returncode == 0 and [row["status"] for row in rows] ==
+          ["pending", "done", "pending", "pending"], "--collect lists case 1 done, others pending")
+    r = run(binary, "sweep", sweep, "-o", out, "--case", "9", cwd=tmp)
+    check(r.returncode == 2, "--case out of range exits 2")
+
+
+def test_plot(source, out):
+    plots = os.path.join(out, "plots")
+    r = subprocess.run(["/usr/bin/python3", os.path.join(source, "scripts", "plot_sweep.py"),
+                        os.path.join(out, "results.csv"), "-o", plots],
+                       capture_output=True, text=True, timeout=120)
+    pngs = glob.glob(os.path.join(plots, "*.png"))
+    check(r.returncode == 0 and len(pngs) == 2,
+          "plot_sweep.py accepts results.csv (%d PNGs) %s" % (len(pngs), r.stderr[-200:]))
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--binary", required=True)
+    parser.add_argument("--source", required=True)
+    parser.add_argument("--shared", default="")
+    args = parser.parse_args()
+    args.binary = os.path.abspath(args.binary)  # the sweeps run in a temporary folder
+    base_abs = os.path.join(args.source, "scenarios", "beam.yaml")
+    if not os.path.isfile(base_abs):
+        print("skip: no scenarios/beam.yaml")
+        return 77
+    with tempfile.TemporaryDirectory() as tmp:
+        base = os.path.relpath(base_abs, tmp)  # relative to the sweep file
+        sweep = os.path.join(tmp, "sweep.yaml")
+        with open(sweep, "w") as f:
+            f.write(SWEEP.format(base=base))
+        out = test_full_sweep(args.binary, tmp, sweep)
+        test_resume(args.binary, tmp, sweep, out)
+        test_invalid(args.binary, tmp, base)
+        test_case_and_collect(args.binary, tmp, sweep)
+        test_plot(args.source, out)
+    print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
+    return 1 if FAILURES else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
