@@ -157,6 +157,27 @@ def test_plot(source, out):
           "plot_sweep.py accepts results.csv (%d PNGs) %s" % (len(pngs), r.stderr[-200:]))
 
 
+def test_bundled_sweeps(binary, source, tmp):
+    """scenarios/sweeps/*.yaml are valid for an independent validator (editors use the schema)
+    and every case of each loads (an --emit run checks them all and runs nothing)."""
+    import jsonschema
+    import yaml
+    with open(os.path.join(source, "schemas", "sweep.schema.json")) as f:
+        schema = json.load(f)
+    files = sorted(glob.glob(os.path.join(source, "scenarios", "sweeps", "*.yaml")))
+    check(bool(files), "bundled sweep files exist")
+    for path in files:
+        name = os.path.basename(path)
+        with open(path) as f:
+            errors = list(jsonschema.Draft7Validator(schema).iter_errors(yaml.safe_load(f)))
+        check(not errors, "%s validates with jsonschema %s" % (name, [e.message for e in errors]))
+        out = os.path.join(tmp, "emit_" + name)
+        r = run(binary, "sweep", path, "-o", out, "--emit", "slurm")
+        check(r.returncode == 0 and os.path.isfile(os.path.join(out, "sweep.sbatch"))
+              and not glob.glob(os.path.join(out, "case_*", "log.h5")),
+              "%s: every case loads; --emit slurm writes the scripts and runs nothing" % name)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--binary", required=True)
@@ -178,6 +199,7 @@ def main():
         test_invalid(args.binary, tmp, base)
         test_case_and_collect(args.binary, tmp, sweep)
         test_plot(args.source, out)
+        test_bundled_sweeps(args.binary, args.source, tmp)
     print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
     return 1 if FAILURES else 0
 
