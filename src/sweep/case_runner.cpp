@@ -9,12 +9,12 @@
 #include <cerrno>
 #include <chrono>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <thread>
 
 #include "core/error.hpp"
+#include "core/text_file.hpp"
 
 extern char** environ;
 
@@ -58,17 +58,10 @@ pid_t spawn_child(const RunnerOptions& options, const CaseJob& job) {
   return pid;
 }
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 CaseStatus status_of(int wait_status, const CaseJob& job, double wall_time) {
   CaseStatus status;
   status.wall_time = wall_time;
-  const std::string tail = failure_message(read_text(job.folder / "stderr.txt"));
+  const std::string tail = failure_message(read_text_if_any(job.folder / "stderr.txt"));
   if (WIFEXITED(wait_status)) {
     status.exit_code = WEXITSTATUS(wait_status);
     if (status.exit_code != 0) status.message = tail;

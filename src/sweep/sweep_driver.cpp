@@ -1,9 +1,8 @@
 #include "sweep/sweep_driver.hpp"
 
-#include <fstream>
-#include <sstream>
 
 #include "core/error.hpp"
+#include "core/text_file.hpp"
 #include "core/log.hpp"
 #include "scenario/scenario.hpp"
 #include "sweep/case_runner.hpp"
@@ -71,17 +70,10 @@ void check_cases(const Plan& plan) {
   }
 }
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // Cases are found again by index, so a folder made by another sweep file must not be mixed in.
 void lay_out(const Plan& plan) {
   const fs::path copy = plan.dir / "sweep.yaml";
-  if (fs::exists(copy) && read_text(copy) != plan.spec.text)
+  if (fs::exists(copy) && read_text_if_any(copy) != plan.spec.text)
     throw InputError(plan.dir.string() + " holds another sweep (its sweep.yaml differs from " +
                      plan.spec.file.string() + "): choose another -o or delete it");
   std::error_code error;

@@ -24,6 +24,12 @@ def check(cond, what):
     (PASSED if cond else FAILURES).append(what)
 
 
+def report():
+    """The closing line every end-to-end test prints, and its exit status."""
+    print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
+    return 1 if FAILURES else 0
+
+
 def run(binary, *args, env=None):
     return subprocess.run([binary, *args], capture_output=True, text=True, env=env, timeout=600)
 
@@ -210,8 +216,7 @@ def main():
                                    0.5, (10, 25))
         test_adaptive_beam(args.binary, args.source, tmp)
         test_liver_press(args.binary, args.source, tmp)
-    print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
-    return 1 if FAILURES else 0
+    return report()
 
 
 if __name__ == "__main__":

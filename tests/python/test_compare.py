@@ -8,30 +8,28 @@ Run by ctest as
     /usr/bin/python3 test_compare.py --binary MRSIM --source REPO --shared SHARED
 Exit status: 0 all checks passed, 1 a check failed, 77 skipped (no binary yet).
 """
-import argparse
 import json
 import os
 import re
 import shutil
-import subprocess
 import sys
 import tempfile
 
 import h5py
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
 
-FAILURES = []
-PASSED = []
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import test_cli_run as cli  # noqa: E402  (shared helpers: check, run, parse_args, report)
+
 NUMBER = r"(-?[0-9.]+(?:e[-+][0-9]+)?|nan|-?inf)"
 
 
 def check(cond, what, detail=""):
-    print(("ok   " if cond else "FAIL ") + what + ("" if cond or not detail else "\n" + detail))
-    (PASSED if cond else FAILURES).append(what)
+    """cli.check, with the output that explains a failure."""
+    cli.check(cond, what + ("" if cond or not detail else "\n" + detail))
 
 
-def run(binary, *args):
-    return subprocess.run([binary, *args], capture_output=True, text=True, timeout=600)
+run = cli.run
 
 
 def compare(binary, a, b, *options):
@@ -198,21 +196,10 @@ def test_usage(binary, a, b):
     check(compare(binary, a, b, "--atol", "nan").returncode == 2, "--atol nan is a usage error (exit 2)")
 
 
-def parse_args():
-    """The ctest arguments; None (print why) when there is no binary to test: skip."""
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--binary", required=True)
-    ap.add_argument("--source", required=True)
-    ap.add_argument("--shared")
-    args = ap.parse_args()
-    if not os.path.exists(args.binary):
-        print("skipped: no binary at " + args.binary)
-        return None
-    return args
 
 
 def main():
-    args = parse_args()
+    args = cli.parse_args()
     if args is None:
         return 77
     with tempfile.TemporaryDirectory() as tmp:
@@ -234,8 +221,7 @@ def main():
         test_scenario_key(args.binary, a, b, tmp)
         test_unreadable_inputs(args.binary, a, b, tmp)
         test_usage(args.binary, a, b)
-    print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
-    return 1 if FAILURES else 0
+    return cli.report()
 
 
 if __name__ == "__main__":

@@ -4,28 +4,24 @@ the same outputs bit for bit when run twice and when run with 1 or 2 threads (th
 loops forced on whatever their size). Checked with `mrsim compare` at zero tolerance (every
 log.h5 dataset and attribute but wall times, every VTU array, the resolved scenarios, the
 summary) and byte for byte on the VTU pieces; a scenario with a tool covers the contact path."""
-import argparse
 import filecmp
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
 import h5py
 
-FAILURES = []
-PASSED = []
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import test_cli_run as cli  # noqa: E402  (shared helpers: check, run, parse_args, report)
+
 INTEGRATORS = ("modified_euler", "stoermer_verlet", "semi_implicit", "semi_implicit_momentum")
 
 
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    (PASSED if cond else FAILURES).append(what)
+check = cli.check
 
 
-def run(binary, *args, env=None):
-    return subprocess.run([binary, *args], capture_output=True, text=True, env=env, timeout=600)
+run = cli.run
 
 
 def frame_files(folder):
@@ -71,20 +67,8 @@ def runs_agree(binary, scenario, tmp, name, sets):
         return json.load(f)
 
 
-def parse_args():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--binary", required=True)
-    ap.add_argument("--source", required=True)
-    ap.add_argument("--shared")
-    args = ap.parse_args()
-    if not os.path.exists(args.binary):
-        print("skipped: no binary at " + args.binary)
-        return None
-    return args
-
-
 def main():
-    args = parse_args()
+    args = cli.parse_args()
     if args is None:
         return 77
     scenarios = os.path.join(args.source, "scenarios")
@@ -97,8 +81,7 @@ def main():
         summary = runs_agree(args.binary, os.path.join(scenarios, "liver_probe.yaml"), tmp,
                              "liver_probe", adaptive + ["time.duration=0.3"])
         check((summary.get("peak_tool_force") or 0) > 0, "liver_probe: the probe touched the liver")
-    print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
-    return 1 if FAILURES else 0
+    return cli.report()
 
 
 if __name__ == "__main__":

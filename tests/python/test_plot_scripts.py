@@ -3,7 +3,6 @@
 valid, the numbers plotted are the log's and the table's (read back from the figures), a
 killed run is cut to its complete frames, a run without tools has no tool plot, failed sweep
 cases are marked, and unreadable inputs exit 2 naming the file."""
-import argparse
 import csv
 import importlib.util
 import os
@@ -16,14 +15,13 @@ import tempfile
 import h5py
 import numpy as np
 
-FAILURES = []
-PASSED = []
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import test_cli_run as cli  # noqa: E402  (shared helpers: check, run, parse_args, report)
+
 PYTHON = "/usr/bin/python3"
 
 
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    (PASSED if cond else FAILURES).append(what)
+check = cli.check
 
 
 def load(source, name):
@@ -311,21 +309,10 @@ def test_sweep_variants(source, ps, tmp):
     check(script(source, "plot_sweep.py", "--help").returncode == 0, "plot_sweep.py --help")
 
 
-def parse_args():
-    """The ctest arguments; None (print why) when there is no binary to test: skip."""
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--binary", required=True)
-    ap.add_argument("--source", required=True)
-    ap.add_argument("--shared")
-    args = ap.parse_args()
-    if not os.path.exists(args.binary):
-        print("skipped: no binary at " + args.binary)
-        return None
-    return args
 
 
 def main():
-    args = parse_args()
+    args = cli.parse_args()
     if args is None:
         return 77
     pr, ps = load(args.source, "plot_run"), load(args.source, "plot_sweep")
@@ -339,8 +326,7 @@ def main():
             test_series(pr, runs["liver"])
             test_time_levels(pr, runs["beam"])
             test_killed_run(args.source, pr, runs["liver"], tmp)
-    print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
-    return 1 if FAILURES else 0
+    return cli.report()
 
 
 if __name__ == "__main__":

@@ -4,7 +4,6 @@ array of 3 tasks and an `afterany` job depending on it, the way `mrsim sweep --e
 submits sweep.sbatch and collect.sbatch (docs/slurm.md). When `mrsim sweep --help` mentions
 `--emit`, a tiny sweep of beam.yaml (3 cases) also goes through Slurm and DIR/results.csv must
 hold 3 done rows. Exit 77 (skipped) when Slurm cannot be started here, saying why."""
-import argparse
 import csv
 import os
 import re
@@ -13,15 +12,14 @@ import sys
 import tempfile
 import time
 
-FAILURES = []
-PASSED = []
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import test_cli_run as cli  # noqa: E402  (shared helpers: check, run, parse_args, report)
+
 TERMINAL = {"COMPLETED", "FAILED", "CANCELLED", "TIMEOUT", "NODE_FAIL", "OUT_OF_MEMORY",
             "BOOT_FAIL", "DEADLINE", "PREEMPTED"}
 
 
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    (PASSED if cond else FAILURES).append(what)
+check = cli.check
 
 
 def sh(args, env, cwd=None, timeout=120):
@@ -112,7 +110,7 @@ def test_array_and_dependency(env, tmp):
     expected = "".join("%d %s\n" % (k, array) for k in range(3))
     check(text == expected, "all.txt holds tasks 0,1,2 of array %s, in order: %r"
           % (array, text))
-    if FAILURES:
+    if cli.FAILURES:
         show_logs(work)
 
 
@@ -185,20 +183,14 @@ def test_sweep(binary, source, env, tmp):
                   "a resubmitted array completes %s" % states.get(again))
             check(mtimes == [os.path.getmtime(p) for p in status],
                   "and leaves the finished cases untouched (status.json not rewritten)")
-    if FAILURES:
+    if cli.FAILURES:
         show_logs(out)
 
 
-def parse_args():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--binary", required=True)
-    ap.add_argument("--source", required=True)
-    ap.add_argument("--shared", default="")
-    return ap.parse_args()
-
-
 def main():
-    args = parse_args()
+    args = cli.parse_args()
+    if args is None:
+        return 77
     t_start = time.time()
     script = os.path.join(args.source, "scripts", "slurm_local.sh")
     env = dict(os.environ)
@@ -240,8 +232,7 @@ def main():
             r = sh(["bash", script, "stop"], env)
             check(r.returncode == 0, "slurm_local.sh stop exits 0 %s" % r.stderr.strip())
     print("run time %.1f s" % (time.time() - t_start))
-    print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
-    return 1 if FAILURES else 0
+    return cli.report()
 
 
 if __name__ == "__main__":

@@ -3,7 +3,6 @@
 (one diverges), results.csv against each summary.json, resume (finished cases skipped,
 --retry-failed, a deleted status.json), an invalid sweep (exit 2, nothing written),
 --case K, --collect, and scripts/plot_sweep.py on the produced table."""
-import argparse
 import csv
 import glob
 import json
@@ -12,13 +11,12 @@ import subprocess
 import sys
 import tempfile
 
-FAILURES = []
-PASSED = []
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import test_cli_run as cli  # noqa: E402  (shared helpers: check, run, parse_args, report)
 
 
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    (PASSED if cond else FAILURES).append(what)
+
+check = cli.check
 
 
 def run(binary, *args, cwd=None):
@@ -179,11 +177,9 @@ def test_bundled_sweeps(binary, source, tmp):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--binary", required=True)
-    parser.add_argument("--source", required=True)
-    parser.add_argument("--shared", default="")
-    args = parser.parse_args()
+    args = cli.parse_args()
+    if args is None:
+        return 77
     args.binary = os.path.abspath(args.binary)  # the sweeps run in a temporary folder
     base_abs = os.path.join(args.source, "scenarios", "beam.yaml")
     if not os.path.isfile(base_abs):
@@ -200,8 +196,7 @@ def main():
         test_case_and_collect(args.binary, tmp, sweep)
         test_plot(args.source, out)
         test_bundled_sweeps(args.binary, args.source, tmp)
-    print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
-    return 1 if FAILURES else 0
+    return cli.report()
 
 
 if __name__ == "__main__":

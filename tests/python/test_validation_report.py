@@ -9,13 +9,12 @@ import subprocess
 import sys
 import tempfile
 
-FAILURES = []
-PASSED = []
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import test_cli_run as cli  # noqa: E402  (shared helpers: check, run, parse_args, report)
 
 
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    (PASSED if cond else FAILURES).append(what)
+
+check = cli.check
 
 
 def record(folder, rid, measured, lower, upper, series=None, title="a check"):
@@ -75,8 +74,7 @@ def main():
         os.makedirs(empty)
         code, _ = report(script, empty, os.path.join(tmp, "none.md"))
         check(code != 0, "no records: an error, not an empty report")
-    print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
-    return 1 if FAILURES else 0
+    return cli.report()
 
 
 if __name__ == "__main__":
