@@ -41,9 +41,21 @@ std::optional<std::size_t> parse_index(const std::string& token, std::size_t siz
   return index;
 }
 
-// valijson names a place as {"<root>", "[material]", "[lambda]"}; items are "[0]" too, so the
-// document tells whether a token is an index or a key.
-std::string context_pointer(const std::vector<std::string>& context, const json& document) {
+// valijson's own texts, without the "Failed to validate ... child/property/item" echoes of
+// a nested failure: the last resort when no rebuilt message applies.
+std::vector<Issue> raw_issues(const valijson::ValidationResults& results, const json& document) {
+  std::vector<Issue> issues;
+  for (const auto& error : results)
+    if (error.description.rfind("Failed to validate", 0) != 0)
+      issues.push_back({valijson_context_pointer(error.context, document), error.description});
+  if (issues.empty()) issues.push_back({"", "does not match the scenario schema"});
+  return issues;
+}
+
+}  // namespace
+
+std::string valijson_context_pointer(const std::vector<std::string>& context,
+                                     const json& document) {
   std::string pointer;
   const json* value = &document;
   for (const auto& part : context) {
@@ -64,19 +76,6 @@ std::string context_pointer(const std::vector<std::string>& context, const json&
   return pointer;
 }
 
-// valijson's own texts, without the "Failed to validate ... child/property/item" echoes of
-// a nested failure: the last resort when no rebuilt message applies.
-std::vector<Issue> raw_issues(const valijson::ValidationResults& results, const json& document) {
-  std::vector<Issue> issues;
-  for (const auto& error : results)
-    if (error.description.rfind("Failed to validate", 0) != 0)
-      issues.push_back({context_pointer(error.context, document), error.description});
-  if (issues.empty()) issues.push_back({"", "does not match the scenario schema"});
-  return issues;
-}
-
-}  // namespace
-
 std::vector<Issue> schema_issues(const json& document) {
   valijson::Validator validator;
   valijson::ValidationResults results;
@@ -84,7 +83,7 @@ std::vector<Issue> schema_issues(const json& document) {
   if (validator.validate(compiled_schema(), adapter, &results)) return {};
   std::vector<std::string> flagged;
   for (const auto& error : results) {
-    auto pointer = context_pointer(error.context, document);
+    auto pointer = valijson_context_pointer(error.context, document);
     if (std::find(flagged.begin(), flagged.end(), pointer) == flagged.end())
       flagged.push_back(std::move(pointer));
   }

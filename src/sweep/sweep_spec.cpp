@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "scenario/issues.hpp"
 #include "scenario/json_path.hpp"
+#include "scenario/schema_validator.hpp"
 #include "scenario/yaml_to_json.hpp"
 
 namespace mrsim::sweep {
@@ -34,30 +35,6 @@ const valijson::Schema& compiled_schema() {
     return built;
   }();
   return *schema;
-}
-
-// valijson names a place as {"<root>", "[product]", "[material.lambda]", "[0]"}. Sweep keys
-// contain dots, so tokens are looked up in the document rather than split.
-std::string context_pointer(const std::vector<std::string>& context, const json& document) {
-  std::string pointer;
-  const json* value = &document;
-  for (const auto& part : context) {
-    if (part.size() < 2 || part.front() != '[' || part.back() != ']') continue;
-    const std::string token = part.substr(1, part.size() - 2);
-    if (value->is_object() && value->contains(token)) {
-      pointer = scenario::child_pointer(pointer, token);
-      value = &(*value)[token];
-    } else if (value->is_array() && !token.empty() &&
-               std::all_of(token.begin(), token.end(), ::isdigit) &&
-               std::stoul(token) < value->size()) {
-      const std::size_t index = std::stoul(token);
-      pointer = scenario::child_pointer(pointer, index);
-      value = &(*value)[index];
-    } else {
-      break;
-    }
-  }
-  return pointer;
 }
 
 // valijson reports an unknown top-level key at the root; naming the key at its own line is
@@ -83,7 +60,7 @@ std::vector<Issue> schema_issues(const json& document) {
   std::vector<Issue> issues = unknown_key_issues(document);
   for (const auto& error : results) {
     if (error.description.rfind("Failed to validate", 0) == 0) continue;
-    std::string pointer = context_pointer(error.context, document);
+    std::string pointer = scenario::valijson_context_pointer(error.context, document);
     const bool echo = error.description.find("additionalProperties") != std::string::npos;
     if (pointer.empty() && echo) continue;  // an unknown key, already named at its own line
     issues.push_back({std::move(pointer), error.description});
