@@ -31,13 +31,9 @@ SkinContact::SkinContact(Skin skin, SkinBinding binding, std::vector<Tool> tools
                          double p_wave_modulus)
     : skin_(std::move(skin)), binding_(std::move(binding)), tools_(std::move(tools)) {
   const std::size_t T = tools_.size();
-  for (const Tool& tool : tools_) {
-    std::vector<double> k(skin_.rest.size(), tool.contact.stiffness);
-    if (tool.contact.stiffness <= 0)
-      for (std::size_t s = 0; s < k.size(); ++s)
-        k[s] = skin_.edge[s] > 0 ? p_wave_modulus / skin_.edge[s] : 0.0;
-    stiffness_.push_back(std::move(k));
-  }
+  for (const Tool& tool : tools_)
+    stiffness_.push_back(penalty_stiffness(skin_, tool, p_wave_modulus));
+  penalty_ = skin_penalty(skin_, tools_, p_wave_modulus);
   candidates_.resize(T);
   vertex_force_.assign(skin_.rest.size(), Vec3::Zero());
   tool_force_.assign(T, Vec3::Zero());

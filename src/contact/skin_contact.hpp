@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "contact/contact_bound.hpp"
 #include "contact/skin.hpp"
 #include "contact/skin_binding.hpp"
 #include "contact/skin_map.hpp"
@@ -63,6 +64,10 @@ class SkinContact {
 
   const Skin& skin() const { return skin_; }
   const SkinMap& map() const { return map_; }
+  /// Per tool, the skin vertices of the frame's broad phase (sorted).
+  const std::vector<std::vector<int>>& candidates() const { return candidates_; }
+  /// The penalty of every skin vertex (largest over the tools), for the stable step.
+  const SkinPenalty& penalty() const { return penalty_; }
   /// Contact force on each skin vertex at the last apply() (N).
   const std::vector<Vec3>& vertex_force() const { return vertex_force_; }
 
@@ -78,6 +83,7 @@ class SkinContact {
   SkinMap map_;
   std::vector<Tool> tools_;
   std::vector<std::vector<double>> stiffness_;  // per tool, per skin vertex (Pa/m)
+  SkinPenalty penalty_;
   std::vector<std::vector<int>> candidates_;  // per tool, skin vertices
   std::vector<int> touched_level_, touched_point_;  // where the last forces went
   std::vector<int> forced_;                          // skin vertices with a force

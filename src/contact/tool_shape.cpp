@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace mrsim {
 
@@ -73,6 +74,19 @@ double bounding_radius(const ToolShape& shape) {
       return shape.length + shape.radius;
     case ToolShapeKind::FlatCylinder:
       return std::hypot(shape.radius, shape.length);
+  }
+  return 0;
+}
+
+double contact_area(const ToolShape& shape) {
+  const double r = shape.radius, pi = std::numbers::pi;
+  switch (shape.kind) {
+    case ToolShapeKind::Sphere:
+      return 2 * pi * r * r;
+    case ToolShapeKind::Capsule:
+      return 2 * pi * r * r + pi * r * shape.length;
+    case ToolShapeKind::FlatCylinder:
+      return pi * r * r + pi * r * shape.length;
   }
   return 0;
 }

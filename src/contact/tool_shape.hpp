@@ -36,6 +36,11 @@ ShapeProbe probe(const ToolShape& shape, const Vec3& p);
 /// Radius of a ball centred at the origin of the tool frame that contains the shape.
 double bounding_radius(const ToolShape& shape);
 
+/// The largest skin area the tool can press at once (m²): half its surface (a body does not
+/// wrap more of a tool than the side that faces it). Bounds the contact stiffness a point can
+/// receive (contact/contact_bound.hpp).
+double contact_area(const ToolShape& shape);
+
 /// "sphere", "capsule", "flat_cylinder" (the schema's keys).
 std::string shape_name(ToolShapeKind kind);
 

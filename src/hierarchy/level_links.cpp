@@ -119,17 +119,4 @@ std::vector<LevelLinks> build_level_links(const std::vector<HierarchyLevel>& lev
   return links;
 }
 
-int coincident_with_parent(const LevelLinks& links) {
-  int n = 0;
-  for (std::size_t p = 0; p < links.parent_tet.tet.size(); ++p) {
-    if (links.parent_tet.tet[p] < 0) continue;
-    for (double b : links.parent_tet.bary[p])
-      if (std::abs(b - 1.0) < 1e-9) {
-        ++n;
-        break;
-      }
-  }
-  return n;
-}
-
 }  // namespace mrsim

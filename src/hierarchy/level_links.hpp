@@ -35,10 +35,6 @@ struct HierarchyLevel {
   const PointAdjacency* adj = nullptr;
 };
 
-/// Points of level l that coincide with a vertex of their parent tet (a barycentric coordinate
-/// within 1e-9 of 1): nested meshes share points, which the energy couplings do not like
-/// (docs/hierarchy.md).
-int coincident_with_parent(const LevelLinks& links);
 
 /// Links for every level; O(N log N)-like with a spatial grid per level.
 std::vector<LevelLinks> build_level_links(const std::vector<HierarchyLevel>& levels);

@@ -41,6 +41,8 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law) {
   m.laplacian_w.resize(ops.B.size());
   for (size_t e = 0; e < ops.B.size(); ++e) m.laplacian_w[e] = -ops.B[e].trace() / 4.0;
   edge_lengths(m);
+  m.bounds = tet_energy_bounds(m.geo, law);
+  m.star = star_inertia(m.adj, m.bounds, m.mass);
   return m;
 }
 

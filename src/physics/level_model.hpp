@@ -6,6 +6,7 @@
 #include "physics/edge_operators.hpp"
 #include "physics/material_law.hpp"
 #include "physics/point_adjacency.hpp"
+#include "physics/stable_step_bound.hpp"
 #include "physics/tet_geometry.hpp"
 
 namespace mrsim {
@@ -22,6 +23,8 @@ struct LevelModel {
   std::vector<Mat3> K;               // λA + μB per CSR entry (used by the Cauchy force)
   std::vector<Mat3> D;               // φA + ψB per CSR entry (Cauchy damping); empty if undamped
   std::vector<double> laplacian_w;   // w_ij = -Σ_t V_t ∇N_i·∇N_j per CSR entry (§3.1)
+  TetEnergyBounds bounds;            // energy bounds of each tet (stable step)
+  std::vector<PointInertia> star;    // mass and bounds of each point's whole star
 
   int num_points() const { return adj.num_points(); }
   int num_tets() const { return static_cast<int>(geo.tets.size()); }

@@ -85,7 +85,8 @@ struct TimeSpec {
   IntegratorKind integrator = IntegratorKind::ModifiedEuler;
   double frame_dt = 0.04;  // s, display frame
   int substeps = 0;        // simulation steps per frame; 0 = computed from the meshes
-  double courant = 0.5;    // C in dt <= C h_min / c_p
+  double courant = 1.0;    // fraction of the stable-step estimate used (stable_step.hpp)
+  bool adapt_substeps = true;  // more substeps when the estimate in force needs them
   double duration = 1.0;   // s
   double divergence_energy_factor = 1.0;  // see simulation/divergence.hpp
 };

@@ -59,6 +59,7 @@ TimeSpec time_spec(const json& t) {
   spec.frame_dt = t["frame_dt"].get<double>();
   spec.substeps = t.contains("substeps") ? t["substeps"].get<int>() : 0;
   spec.courant = t["courant"].get<double>();
+  spec.adapt_substeps = t["adapt_substeps"].get<bool>();
   spec.duration = t["duration"].get<double>();
   spec.divergence_energy_factor = t["divergence"]["energy_factor"].get<double>();
   return spec;

@@ -5,6 +5,40 @@
 
 namespace mrsim {
 
+namespace {
+
+// Where point p of level l sits in the hierarchy, in words: where interface instabilities start.
+std::string place_of(const HierarchicalSimulation& sim, int l, int p) {
+  const PointAdjacency& adj = sim.model(l).adj;
+  bool finer = false, coarser = false;
+  for (int e = adj.nbr_start[p]; e < adj.nbr_start[p + 1]; ++e) {
+    const NodeState s = sim.hierarchy().state(l, adj.nbr[e]);
+    finer = finer || s == NodeState::GhostSub;
+    coarser = coarser || s == NodeState::GhostIface;
+  }
+  if (finer) return "a coarse point next to the fine region";
+  if (coarser) return "a fine point at the edge of its region";
+  return "inside level " + std::to_string(l) + "'s region";
+}
+
+// The stable estimate in force at the point and the step it took, compared.
+std::string step_against_estimate(const HierarchicalSimulation& sim, int l, int p) {
+  std::ostringstream os;
+  os.precision(4);
+  const double estimate = sim.stable_steps(l)[p];
+  double step = sim.step();
+  if (const TimeAdaptivity* ta = sim.time_levels())
+    if (ta->level_of(l, p) >= 0) step = ta->rules().frame_dt / (1 << ta->level_of(l, p));
+  os << "its step " << step << " s against its stable step estimate " << estimate << " s";
+  if (step > estimate)
+    os << " (above it: raise time.substeps or omit it to have it computed)";
+  else
+    os << " (within it: a large deformation, inverted tets or a sudden load)";
+  return os.str();
+}
+
+}  // namespace
+
 DivergenceGuard DivergenceGuard::for_level(const LevelModel& model, double energy_factor) {
   double volume = 0;
   for (double v : model.geo.volume) volume += v;
@@ -20,15 +54,21 @@ std::optional<std::string> DivergenceGuard::check(const HierarchicalSimulation& 
       const PointState& s = sim.state(l);
       if (s.u[i].allFinite() && s.v[i].allFinite()) continue;
       std::ostringstream os;
-      os << "non-finite displacement or velocity at point " << i << " of level " << l;
+      os << "non-finite displacement or velocity at point " << i << " of level " << l << ", "
+         << place_of(sim, l, i) << "; " << step_against_estimate(sim, l, i);
       return os.str();
     }
   if (!std::isfinite(internal_energy) || internal_energy > energy_bound) {
+    const auto& in_force = sim.stable_step_in_force();
     std::ostringstream os;
     os.precision(4);
     os << "internal energy " << internal_energy << " J exceeds the bound " << energy_bound
-       << " J (time.divergence.energy_factor x 1/2 V (lambda+2mu)); the time step is probably "
-          "above the stability limit: raise time.substeps or use time.integrator: semi_implicit";
+       << " J (time.divergence.energy_factor x 1/2 V (lambda+2mu)); the step " << sim.step()
+       << " s against the stable step estimate in force " << in_force.dt << " s";
+    if (in_force.level >= 0)
+      os << " (point " << in_force.point << " of level " << in_force.level << ", "
+         << place_of(sim, in_force.level, in_force.point) << ")";
+    os << "; raise time.substeps or use time.integrator: semi_implicit";
     return os.str();
   }
   return std::nullopt;

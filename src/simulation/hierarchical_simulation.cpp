@@ -1,6 +1,7 @@
 #include "simulation/hierarchical_simulation.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <tuple>
 
@@ -87,10 +88,15 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
     remap_skin();
     update_external(0.0);
   }
+  semi_implicit_ = is_semi_implicit(setup.integrator);
+  update_inertia();
   stepper_ = std::make_unique<Stepper>(setup.integrator, std::move(blocks),
                                        [this] { after_positions(); }, std::move(gathered));
   dt_ = setup.dt;
-  steps_per_frame_ = setup.steps_per_frame;
+  steps_per_frame_ = base_steps_per_frame_ = setup.steps_per_frame;
+  global_frame_ = setup.dt * setup.steps_per_frame;
+  adapt_step_ = setup.adapt_step;
+  courant_ = setup.courant;
   if (transfer_ && coupling_ == Coupling::EnergyConsistent)
     patch_ = std::make_unique<PatchTestWeights>(*hierarchy_);
   if (setup.time_levels) {
@@ -102,7 +108,7 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
       fields.push_back(forces_[l].get());
     }
     time_levels_ = std::make_unique<TimeAdaptivity>(*hierarchy_, *lists_, models, fields, states_,
-                                                    *setup.time_levels);
+                                                    stable_dt_, *setup.time_levels);
     std::vector<IntegrationBlock> body(L);
     for (int l = 0; l < L; ++l) {
       body[l].state = &states_[l];
@@ -126,12 +132,15 @@ void HierarchicalSimulation::restart_integrator() {
 
 void HierarchicalSimulation::advance_frame(std::vector<TimeLevelChange>* changes) {
   if (!time_levels_) {
-    advance(steps_per_frame_);
+    begin_contact_frame(steps_per_frame_ * dt_);
+    adapt_step();
+    run_steps(steps_per_frame_);
     return;
   }
   std::vector<TimeLevelChange>& out = changes ? *changes : changes_scratch_;
   changes_scratch_.clear();
   begin_contact_frame(frame_dt_);
+  if (contact_) time_levels_->refile();  // the contact near the tools changed the stable steps
   run_w_cycle(out);
   ++frames_;
   time_ = static_cast<double>(frames_) * frame_dt_;
@@ -205,6 +214,25 @@ void HierarchicalSimulation::advance(int steps) {
   if (time_levels_)
     throw std::logic_error("HierarchicalSimulation::advance: with time levels use advance_frame");
   begin_contact_frame(steps * dt_);
+  run_steps(steps);
+}
+
+// The frame's step follows the stable step in force (without time levels): doubled as often as
+// it needs, halved back while twice the step still fits, never coarser than the setup's.
+void HierarchicalSimulation::adapt_step() {
+  if (!adapt_step_) return;
+  const double allowed = courant_ * in_force_.dt;
+  while (dt_ > allowed && steps_per_frame_ <= (1 << 29)) {
+    steps_per_frame_ *= 2;
+    dt_ = global_frame_ / steps_per_frame_;
+  }
+  while (steps_per_frame_ > base_steps_per_frame_ && 2 * dt_ <= allowed) {
+    steps_per_frame_ /= 2;
+    dt_ = global_frame_ / steps_per_frame_;
+  }
+}
+
+void HierarchicalSimulation::run_steps(int steps) {
   for (int s = 0; s < steps; ++s) {
     clock_ = time_ + dt_;
     stepper_->step(dt_);
@@ -220,6 +248,7 @@ void HierarchicalSimulation::begin_contact_frame(double duration) {
   if (!contact_) return;
   contact_->begin_frame(time_, time_ + duration, fields_);
   update_external(time_);
+  update_stable_steps();
 }
 
 void HierarchicalSimulation::remap_skin() {
@@ -419,8 +448,71 @@ void HierarchicalSimulation::apply_changes() {
     remap_skin();
     update_external(time_);
   }
+  update_inertia();
   if (time_levels_) time_levels_->refile();
   restart_integrator();
+}
+
+// Once per topology change, after the weights and the skin map: the masses the integrator
+// uses and gravity follow the tets' shares (hierarchy/interface_inertia.hpp).
+void HierarchicalSimulation::update_inertia() {
+  const int L = num_levels();
+  std::vector<InertiaLevel> levels(L);
+  for (int l = 0; l < L; ++l) {
+    levels[l].model = models_[l].get();
+    levels[l].free_point = &states_[l].free_point;
+    if (transfer_ && forces_[l]->weighted()) {
+      levels[l].tets = &forces_[l]->tets();
+      levels[l].weight = &forces_[l]->tet_weights();
+    }
+  }
+  interface_inertia(*hierarchy_, *lists_, levels, transfer_, inertia_);
+  for (int l = 0; l < L; ++l) {
+    forces_[l]->weigh(lists_->active(l), inertia_[l]);
+    for (int p : lists_->active(l))
+      if (states_[l].free_point[p]) states_[l].inv_mass[p] = 1.0 / inertia_[l][p].mass;
+  }
+  update_stable_steps();
+}
+
+// After every topology change and at the start of every frame (the skin vertices near the
+// tools change): every active point's stable step from what reaches it, its star, ghosts and
+// the contact of the vertices a tool may touch in the frame (docs/integrators.md, "The stable
+// step"). O(active + contact candidates).
+void HierarchicalSimulation::update_stable_steps() {
+  const int L = num_levels();
+  loaded_.resize(L);
+  stable_dt_.resize(L);
+  for (int l = 0; l < L; ++l) {
+    loaded_[l].resize(models_[l]->num_points());
+    stable_dt_[l].resize(models_[l]->num_points(), 0.0);
+    for (int p : lists_->active(l)) loaded_[l][p] = inertia_[l][p];
+  }
+  if (contact_) {
+    near_.clear();
+    for (const std::vector<int>& c : contact_->candidates()) near_.insert(near_.end(), c.begin(), c.end());
+    std::sort(near_.begin(), near_.end());
+    near_.erase(std::unique(near_.begin(), near_.end()), near_.end());
+    const SkinMap& map = contact_->map();
+    add_contact_bounds(contact_->penalty(), near_,
+                       [&](int s, std::vector<ActiveTerm>& row) {
+                         row.insert(row.end(), map.begin(s), map.end(s));
+                       },
+                       loaded_);
+  }
+  in_force_ = {};
+  in_force_.dt = std::numeric_limits<double>::infinity();
+  for (int l = 0; l < L; ++l)
+    for (int p : lists_->active(l)) {
+      if (!states_[l].free_point[p]) continue;
+      const double dt = stable_step_of(loaded_[l][p], semi_implicit_);
+      stable_dt_[l][p] = dt;
+      if (dt < in_force_.dt) in_force_ = {dt, l, p};
+    }
+}
+
+double HierarchicalSimulation::step() const {
+  return time_levels_ ? frame_dt_ / time_levels_->schedule().ticks_per_frame() : dt_;
 }
 
 // Once per topology change, after the shares: the interface band's weights for the patch test.

@@ -12,6 +12,7 @@
 #include "contact/skin_contact.hpp"
 #include "hierarchy/coupling_kind.hpp"
 #include "hierarchy/ghost_update.hpp"
+#include "hierarchy/interface_inertia.hpp"
 #include "hierarchy/patch_test_weights.hpp"
 #include "hierarchy/status_lists.hpp"
 #include "physics/level_model.hpp"
@@ -33,6 +34,10 @@ struct HierarchySetup {
   Vec3 initial_angular_velocity = Vec3::Zero();  // rad/s about level 0's centre of mass
   std::vector<SurfaceLoad> loads;                // surface loads, nodal forces per level
   int steps_per_frame = 1;                       // steps of dt per advance_frame()
+  // Without time levels: when the stable step in force (times `courant`) falls below dt at a
+  // frame start, the frame's steps double (and halve back, never below steps_per_frame).
+  bool adapt_step = false;
+  double courant = 1.0;
   // Per-particle time levels (method.md §5.2, §5.4): each particle steps frame_dt / 2^k and
   // advance_frame() runs the W-cycle; dt and steps_per_frame are then unused.
   std::optional<TimeLevelRules> time_levels;
@@ -63,10 +68,28 @@ class HierarchicalSimulation {
   void advance_frame(std::vector<TimeLevelChange>* changes = nullptr);
   /// Simulated time (s) since the start.
   double time() const { return time_; }
+  /// Steps of the next (or current) frame without time levels: the setup's, or more when the
+  /// stable step in force needs them (HierarchySetup::adapt_step).
+  int steps_per_frame() const { return steps_per_frame_; }
   /// Integration steps taken (with time levels: W-cycle sub-steps that integrated something).
   std::int64_t steps() const { return steps_; }
   /// What the last adjustment of the interface weights achieved (energy coupling).
   const PatchTestReport& patch_test() const { return patch_report_; }
+  /// Mass (the one the integrator uses: interface masses under the energy couplings) and the
+  /// stiffness and damping energy bounds, without contact, of every active point of level l
+  /// (other entries are scratch). Updated at every topology change.
+  const std::vector<PointInertia>& inertia(int l) const { return inertia_[l]; }
+  /// Largest stable step of every active free point of level l (s; docs/integrators.md), with
+  /// the contact the tools may add during the current frame.
+  const std::vector<double>& stable_steps(int l) const { return stable_dt_[l]; }
+  /// The smallest of them and where: the stable step in force for the current topology.
+  struct StableStepInForce {
+    double dt = 0;
+    int level = -1, point = -1;
+  };
+  const StableStepInForce& stable_step_in_force() const { return in_force_; }
+  /// Step of the particles (s): dt, or with time levels the finest frame_dt / 2^K.
+  double step() const;
   /// The per-particle time levels, nullptr when the setup has none.
   const TimeAdaptivity* time_levels() const { return time_levels_.get(); }
 
@@ -118,11 +141,15 @@ class HierarchicalSimulation {
                std::vector<ActiveTerm>& row);
   void update_external(double t);
   void begin_contact_frame(double duration);
+  void run_steps(int steps);
+  void adapt_step();
   void remap_skin();
   std::vector<const std::vector<std::uint8_t>*> free_points() const;
   void after_positions();
   void transfer_forces();
   void refile_fixed_ghosts();
+  void update_inertia();
+  void update_stable_steps();
   void restart_integrator();
   void run_w_cycle(std::vector<TimeLevelChange>& changes);
   void drift_all(int from, int to, double frame_start, double tick);
@@ -141,7 +168,9 @@ class HierarchicalSimulation {
   std::vector<TimeLevelChange> changes_scratch_;
   const std::vector<int> nobody_;  // an empty point list for idle blocks
   bool in_sub_step_ = false;       // forces are evaluated for one sub-step's particles only
-  int steps_per_frame_ = 1;
+  int steps_per_frame_ = 1, base_steps_per_frame_ = 1;
+  bool adapt_step_ = false;
+  double courant_ = 1.0, global_frame_ = 0;  // global_frame_: dt × steps per frame
   std::int64_t frames_ = 0, steps_ = 0;
   double frame_dt_ = 0;
   std::vector<LevelFields> fields_;
@@ -166,6 +195,12 @@ class HierarchicalSimulation {
   Vec3 contact_on_support_ = Vec3::Zero();
   Coupling coupling_ = Coupling::Energy;
   bool transfer_ = false;  // energy coupling with more than one level
+  bool semi_implicit_ = false;
+  std::vector<std::vector<PointInertia>> inertia_;  // [level][point], active points
+  std::vector<std::vector<PointInertia>> loaded_;   // the same with the tools' contact
+  std::vector<int> near_;                           // skin vertices near a tool (scratch)
+  std::vector<std::vector<double>> stable_dt_;      // [level][point], active free points
+  StableStepInForce in_force_;
 };
 
 }  // namespace mrsim

@@ -34,19 +34,19 @@ Energies hierarchy_energies(const HierarchicalSimulation& sim) {
   double mass = 0;
   Vec3 momentum = Vec3::Zero();
   for (int l = 0; l < sim.num_levels(); ++l) {
-    const auto& m = sim.model(l).mass;
+    const auto& in = sim.inertia(l);  // the masses the integrator uses
     const auto& v = sim.state(l).v;
     for (int p : sim.lists().active(l)) {
-      e.kinetic += 0.5 * m[p] * v[p].squaredNorm();
-      mass += m[p];
-      momentum += m[p] * v[p];
+      e.kinetic += 0.5 * in[p].mass * v[p].squaredNorm();
+      mass += in[p].mass;
+      momentum += in[p].mass * v[p];
     }
     e.elastic += level_elastic_energy(sim, l);
   }
   const Vec3 vcm = mass > 0 ? Vec3(momentum / mass) : Vec3::Zero();
   for (int l = 0; l < sim.num_levels(); ++l)
     for (int p : sim.lists().active(l))
-      e.internal_kinetic += 0.5 * sim.model(l).mass[p] * (sim.state(l).v[p] - vcm).squaredNorm();
+      e.internal_kinetic += 0.5 * sim.inertia(l)[p].mass * (sim.state(l).v[p] - vcm).squaredNorm();
   return e;
 }
 

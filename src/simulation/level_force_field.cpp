@@ -8,11 +8,17 @@
 
 namespace mrsim {
 
-LevelForceField::LevelForceField(const LevelModel& model, const Vec3& gravity) : model_(model) {
+LevelForceField::LevelForceField(const LevelModel& model, const Vec3& gravity)
+    : model_(model), gravity_(gravity) {
   weight_.resize(model.num_points());
   for (int i = 0; i < model.num_points(); ++i) weight_[i] = model.mass[i] * gravity;
   tet_mark_.assign(model.num_tets(), 0);
   ws_.reserve_for(model);
+}
+
+void LevelForceField::weigh(const std::vector<int>& points,
+                            const std::vector<PointInertia>& inertia) {
+  for (int p : points) weight_[p] = inertia[p].gravity_mass * gravity_;
 }
 
 void LevelForceField::serve(const std::vector<int>* points) {

@@ -33,6 +33,9 @@ class LevelForceField final : public ForceField {
   /// Extra force per point (N, the level's surface loads), added on the served points; the
   /// array is read at every evaluation. nullptr: none.
   void set_external(const Vec3* external) { external_ = external; }
+  /// Gravity m_p g on these points from now on, m_p the gravitational mass of
+  /// hierarchy/interface_inertia.hpp (the lumped mass by default).
+  void weigh(const std::vector<int>& points, const std::vector<PointInertia>& inertia);
   std::int64_t evaluate(const Vec3* u, const Vec3* v, Vec3* f) override;
 
   /// Fills `out` for these integrated points (a subset of the served ones) and the ghosts of
@@ -57,6 +60,7 @@ class LevelForceField final : public ForceField {
   std::vector<int> tets_;                 // live tets when restricted
   std::vector<unsigned char> tet_mark_;
   std::vector<Vec3> weight_;              // m_i g, precomputed
+  Vec3 gravity_;
   ForceWorkspace ws_;
   const Vec3* external_ = nullptr;
   // Coupled mode: used only while the level has ghosts (otherwise every live tet is whole).

@@ -28,6 +28,8 @@ HierarchySetup hierarchy_setup(const Scenario& sc, const std::vector<const TetMe
   s.coupling = sc.space.coupling;
   s.dt = sc.time.frame_dt / sc.time.substeps;
   s.steps_per_frame = sc.time.substeps;
+  s.adapt_step = sc.time.adapt_substeps && !sc.time_levels.enabled;
+  s.courant = sc.time.courant;
   if (sc.time_levels.enabled) {
     TimeLevelRules rules;
     rules.frame_dt = sc.time.frame_dt;

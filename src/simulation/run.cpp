@@ -243,23 +243,24 @@ struct RunState {
   std::string message;
   std::int64_t splits = 0, merges = 0;
   std::int64_t budget_hold = 0, budget_shed = 0;  // frames over the real-time budget
+  int substep_changes = 0;                         // time.adapt_substeps
 };
 
-// Nested meshes (levels sharing many points) make the energy couplings stiffer than the
-// Courant estimate at those points: a sliding probe on 4/8/16-cell boxes blew up at the
-// estimate and ran at a quarter of it (docs/hierarchy.md). Said once, before the run.
-void warn_about_shared_points(const Scenario& sc, const HierarchicalSimulation& sim) {
-  if (sim.coupling() == Coupling::Force || !sc.space.enabled) return;
-  for (int l = 1; l < sim.num_levels(); ++l) {
-    const int shared = coincident_with_parent(sim.hierarchy().links(l));
-    if (shared * 20 < sim.model(l).num_points()) continue;  // a few corners are harmless
-    std::ostringstream os;
-    os << "level " << l << " shares " << shared << " of its " << sim.model(l).num_points()
-       << " points with level " << l - 1 << " (nested meshes): the energy couplings may need a "
-       << "step up to 4x smaller than the stable estimate there; use meshes that do not share "
-          "points, more time.substeps, or adaptivity.space.coupling: force";
-    warn(os.str());
-  }
+// time.adapt_substeps: the frame just run took another number of steps than the one before,
+// because the stable step in force changed (docs/integrators.md). An event per change; a line
+// on stderr for the first few.
+void report_substeps(const HierarchicalSimulation& sim, int frame, int before,
+                     FrameWriter& writer, RunState& st) {
+  const auto& where = sim.stable_step_in_force();
+  writer.event({frame, "substeps", where.level, where.point});
+  if (++st.substep_changes > 5) return;
+  std::ostringstream os;
+  os.precision(4);
+  os << "frame " << frame << ": " << sim.steps_per_frame() << " substeps instead of " << before
+     << " (stable step estimate in force " << where.dt << " s at point " << where.point
+     << " of level " << where.level << ")" << (st.substep_changes == 5 ? "; further changes "
+     "are only logged (events 'substeps')" : "");
+  info(os.str());
 }
 
 // method.md §6.2 point 5: the rule for the adaptivity at a frame boundary from the wall time
@@ -326,7 +327,6 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
   const HierarchySetup setup = hierarchy_setup(sc, pointers(meshes));
   HierarchicalSimulation sim(pointers(meshes), setup);
   SpaceAdaptivity adapt(space_settings(sc), sim);
-  warn_about_shared_points(sc, sim);
   const DivergenceGuard guard =
       DivergenceGuard::for_level(sim.model(0), sc.time.divergence_energy_factor);
   const int frames = frame_count(sc.time);
@@ -342,7 +342,9 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
   for (int frame = 1; frame <= frames; ++frame) {
     const auto tf = Clock::now();
     changes.clear();
+    const int substeps = sim.steps_per_frame();
     sim.advance_frame(&changes);
+    if (sim.steps_per_frame() != substeps) report_substeps(sim, frame, substeps, writer, st);
     // The frame just simulated decides whether the hierarchy may grow at its boundary.
     const BudgetRule budget = budget_rule(sc, seconds_since(tf));
     sum.steps = sim.steps();

@@ -5,11 +5,99 @@
 #include <limits>
 #include <sstream>
 
+#include "contact/contact_bound.hpp"
+#include "contact/skin_binding.hpp"
+#include "contact/tool_shape.hpp"
+#include "core/error.hpp"
 #include "core/log.hpp"
+#include "physics/lumped_mass.hpp"
+#include "simulation/contact_setup.hpp"
 #include "simulation/level_setup_from_scenario.hpp"
-#include "time/time_level_rules.hpp"
 
 namespace mrsim {
+
+namespace {
+
+std::vector<PointInertia> mesh_star_inertia(const TetMesh& mesh, const MaterialLaw& law) {
+  const TetGeometry geo = build_tet_geometry(mesh);
+  const PointAdjacency adj = build_point_adjacency(static_cast<int>(mesh.points.size()), mesh.tets);
+  return star_inertia(adj, tet_energy_bounds(geo, law), lumped_masses(geo, adj, law.density));
+}
+
+// The skin vertices a tool may reach during the run: within twice its bounding radius of its
+// path (sampled 64 times per display frame; the skin moves away from a tool that presses it).
+std::vector<int> reachable_skin(const Skin& skin, const std::vector<Tool>& tools,
+                                const TimeSpec& time) {
+  const int samples = static_cast<int>(std::min(1e6, 64 * std::ceil(time.duration / time.frame_dt)));
+  std::vector<int> out;
+  for (std::size_t s = 0; s < skin.rest.size(); ++s)
+    for (const Tool& tool : tools) {
+      const double reach = 2 * bounding_radius(tool.shape);
+      bool near = false;
+      for (int k = 0; k <= samples && !near; ++k)
+        near = (tool.trajectory.pose(time.duration * k / samples).position - skin.rest[s]).norm() <
+               reach;
+      if (near) {
+        out.push_back(static_cast<int>(s));
+        break;
+      }
+    }
+  return out;
+}
+
+// The contact bound of the points of the finest level that may become active, which moves the
+// skin under a tool (adaptivity refines ahead of contact; without adaptivity that is level 0).
+// The run re-reads it every frame from the skin vertices near the tools and the levels moving
+// them (HierarchicalSimulation::stable_step_in_force).
+void add_tool_contact(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
+                      const MaterialLaw& law, std::vector<std::vector<PointInertia>>& star) {
+  if (sc.tools.empty()) return;
+  const Skin skin = sc.skin.empty() ? boundary_skin(*meshes.back())
+                                    : scenario_skin(sc, *meshes.back());
+  const std::vector<Tool> tools = scenario_tools(sc);
+  const SkinPenalty penalty = skin_penalty(skin, tools, law.lambda + 2 * law.mu);
+  const int l = static_cast<int>(star.size()) - 1;
+  const SkinBinding binding = bind_skin(skin, {meshes[l]});
+  add_contact_bounds(
+      penalty, reachable_skin(skin, tools, sc.time),
+      [&](int s, std::vector<ActiveTerm>& row) {
+        const Tet& t = meshes[l]->tets[binding.tet[0][s]];
+        for (int k = 0; k < 4; ++k) row.push_back({l, t[k], binding.bary[0][s][k]});
+      },
+      star);
+}
+
+double edge_at(const TetMesh& mesh, int p) {
+  double h2 = std::numeric_limits<double>::infinity();
+  for (const Tet& t : mesh.tets)
+    for (int a = 0; a < 4; ++a)
+      if (t[a] == p)
+        for (int b = 0; b < 4; ++b)
+          if (b != a) h2 = std::min(h2, (mesh.points[t[a]] - mesh.points[t[b]]).squaredNorm());
+  return std::sqrt(h2);
+}
+
+// What sets the estimate at a point: the term whose removal would lengthen it most.
+std::string cause_at(const PointInertia& with_contact, const PointInertia& own, bool semi,
+                     double edge) {
+  const double dt = stable_step_of(with_contact, semi);
+  PointInertia undamped = own;
+  undamped.damping = 0;
+  const double elastic = stable_step_of(undamped, semi);
+  const double no_contact = stable_step_of(own, semi);
+  std::ostringstream os;
+  os.precision(3);
+  if (no_contact > 1.5 * dt)
+    os << "the tools' contact penalty stiffness (the step without it would be " << no_contact
+       << " s; lower tools[].contact.stiffness)";
+  else if (elastic > 1.5 * no_contact)
+    os << "the damping material.damping phi/psi (undamped the step would be " << elastic << " s)";
+  else
+    os << "the cells: shortest edge " << edge << " m at this point, P-wave speed";
+  return os.str();
+}
+
+}  // namespace
 
 double shortest_edge(const TetMesh& mesh) {
   double h2 = std::numeric_limits<double>::infinity();
@@ -22,45 +110,65 @@ double shortest_edge(const TetMesh& mesh) {
 
 StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes) {
   const MaterialLaw law = material_law(sc.material);
-  const bool semi_implicit = is_semi_implicit(sc.time.integrator);
+  const bool semi = is_semi_implicit(sc.time.integrator);
   int last = 0;
   if (sc.space.enabled)
     last = sc.space.max_level >= 0 ? std::min<int>(sc.space.max_level, meshes.size() - 1)
                                    : static_cast<int>(meshes.size()) - 1;
-  StableStep best{std::numeric_limits<double>::infinity(), 0};
-  for (int l = 0; l <= last; ++l) {
-    const double dt = courant_step(law, sc.time.courant, semi_implicit, shortest_edge(*meshes[l]));
-    if (dt < best.dt) best = {dt, l};
-  }
+  std::vector<std::vector<PointInertia>> star;
+  for (int l = 0; l <= last; ++l) star.push_back(mesh_star_inertia(*meshes[l], law));
+  const std::vector<std::vector<PointInertia>> own = star;
+  add_tool_contact(sc, {meshes.begin(), meshes.begin() + last + 1}, law, star);
+  StableStep best{std::numeric_limits<double>::infinity(), 0, 0, ""};
+  for (int l = 0; l <= last; ++l)
+    for (int p = 0; p < static_cast<int>(star[l].size()); ++p) {
+      const double dt = stable_step_of(star[l][p], semi);
+      if (dt < best.dt) best = {dt, l, p, ""};
+    }
+  if (std::isfinite(best.dt))
+    best.cause = cause_at(star[best.level][best.point], own[best.level][best.point], semi,
+                          edge_at(*meshes[best.level], best.point));
   return best;
 }
 
 Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes) {
   const StableStep stable = stable_step(sc, meshes);
+  const double allowed = sc.time.courant * stable.dt;
+  const bool time_levels = sc.time_levels.enabled;
+  std::ostringstream where;
+  where.precision(4);
+  where << "level " << stable.level << ", point " << stable.point << ": stable step estimate "
+        << stable.dt << " s, set by " << stable.cause;
   std::ostringstream os;
+  os.precision(4);
   if (sc.time.substeps > 0) {
     const double dt = sc.time.frame_dt / sc.time.substeps;
-    if (dt > stable.dt) {
-      os << "level " << stable.level << ": time step " << dt
-         << " s (frame_dt / substeps) exceeds the stable estimate " << stable.dt
-         << " s (time.courant x shortest edge / P-wave speed"
-         << (is_semi_implicit(sc.time.integrator) ? ", x2 for semi_implicit" : "")
-         << "); raise time.substeps to at least " << std::ceil(sc.time.frame_dt / stable.dt)
+    if (dt > allowed) {
+      os << "time step " << dt << " s (frame_dt / substeps) exceeds time.courant x the stable "
+         << "step estimate, " << allowed << " s (" << where.str() << "); raise time.substeps "
+         << "to at least " << std::ceil(sc.time.frame_dt / allowed)
          << " or omit it to have it computed";
       warn(os.str());
     }
     return sc;
   }
-  int substeps = 1;
-  while (sc.time.frame_dt / substeps > stable.dt && substeps < (1 << 30)) substeps *= 2;
-  // Time levels: two finer levels than Courant needs, for the velocity-change rule (§5.2).
-  const bool time_levels = sc.time_levels.enabled;
-  if (time_levels) substeps = std::min(substeps * 4, 1 << 30);
+  // Time levels: two finer levels than stability needs, for the velocity-change rule (§5.2).
+  const int extra = time_levels ? 4 : 1;
+  long long substeps = 1;
+  while (substeps <= kMaxSubsteps && sc.time.frame_dt / substeps > allowed) substeps *= 2;
+  substeps *= extra;
+  if (substeps > kMaxSubsteps) {
+    os << "time.substeps: the stable step needs " << sc.time.frame_dt / allowed * extra
+       << " steps per frame of " << sc.time.frame_dt << " s, more than the " << kMaxSubsteps
+       << " mrsim allows (" << where.str() << (time_levels ? "; x4 for the time levels" : "")
+       << "); check the mesh units (object.units), the material and the tools";
+    throw InputError(os.str());
+  }
   Scenario out = sc;
-  out.time.substeps = substeps;
-  out.resolved["time"]["substeps"] = substeps;
+  out.time.substeps = static_cast<int>(substeps);
+  out.resolved["time"]["substeps"] = out.time.substeps;
   os << "time.substeps computed: " << substeps << " (step " << sc.time.frame_dt / substeps
-     << " s; stable estimate " << stable.dt << " s, set by level " << stable.level
+     << " s; time.courant " << sc.time.courant << " x " << where.str()
      << (time_levels ? "; x4 for the finer time levels" : "") << ")";
   info(os.str());
   return out;

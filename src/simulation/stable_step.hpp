@@ -1,8 +1,13 @@
 #pragma once
-// The step a scenario may use (method.md §5.2, Courant part; validation.md §2.7): every level
-// that may become active must satisfy dt <= C × shortest edge / c_p, doubled for the
-// semi-implicit step. A scenario without `time.substeps` gets the smallest power of two of
-// steps per frame that does (a power of two, so that the time levels of issue 5 nest in it).
+// The step a scenario may use (method.md §5.2; docs/integrators.md "The stable step"): every
+// point of every level that may become active must satisfy dt <= C × its stable-step estimate
+// (physics/stable_step_bound.hpp: Gershgorin bound of its star's stiffness over its mass,
+// damping, and the contact penalty the tools can add, contact/contact_bound.hpp), C =
+// time.courant. A scenario without `time.substeps` gets the smallest power of two of steps per
+// frame that does (a power of two, so that the time levels nest in it); one that needs more
+// than kMaxSubsteps is an input error naming the point and the cause. During the run the
+// estimate follows the topology (interface masses and stiffness through ghosts,
+// HierarchicalSimulation::stable_step_in_force).
 #include <string>
 #include <vector>
 
@@ -11,21 +16,26 @@
 
 namespace mrsim {
 
+inline constexpr int kMaxSubsteps = 1 << 30;
+
 /// Shortest edge of a mesh (m).
 double shortest_edge(const TetMesh& mesh);
 
 struct StableStep {
-  double dt = 0;   // s, the estimate: min over the levels that may become active
-  int level = 0;   // the level that sets it
+  double dt = 0;      // s, the estimate: min over the points of the levels that may become active
+  int level = 0;      // where it is set
+  int point = 0;
+  std::string cause;  // what sets it there, in words
 };
 
-/// The stable step estimate of the scenario's levels 0..max_level (0 only when space
-/// adaptivity is off).
+/// The stable step estimate (before time.courant) of the scenario's levels 0..max_level (0
+/// only when space adaptivity is off).
 StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes);
 
 /// The scenario with time.substeps filled in when it was omitted (also in `resolved`, so the
 /// written scenario.yaml reruns identically), with an info line saying so; when it was given
-/// and the step exceeds the estimate, a warning naming the level and the substeps needed.
+/// and the step exceeds C × the estimate, a warning naming the level and the substeps needed.
+/// Throws InputError when the step needed is beyond kMaxSubsteps per frame.
 Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes);
 
 }  // namespace mrsim

@@ -9,13 +9,15 @@ namespace mrsim {
 TimeAdaptivity::TimeAdaptivity(const Hierarchy& h, const StatusLists& lists,
                                const std::vector<const LevelModel*>& models,
                                const std::vector<LevelForceField*>& fields,
-                               const std::vector<PointState>& states, const TimeLevelRules& rules)
-    : h_(h), status_(lists), models_(models), fields_(fields), states_(states), rules_(rules),
-      wc_(rules.max_level), K_(rules.max_level) {
+                               const std::vector<PointState>& states,
+                               const std::vector<std::vector<double>>& stable_dt,
+                               const TimeLevelRules& rules)
+    : h_(h), status_(lists), models_(models), fields_(fields), states_(states),
+      stable_dt_(stable_dt), rules_(rules), wc_(rules.max_level), K_(rules.max_level) {
   const int L = num_levels(), levels = rules.max_level + 1;
   for (int l = 0; l < L; ++l) {
     time_level_.emplace_back(models_[l]->num_points(), std::int8_t{-1});
-    courant_.push_back(courant_levels(*models_[l], rules_));
+    courant_.emplace_back(models_[l]->num_points(), std::int8_t{0});
     delta_max_.emplace_back(models_[l]->num_points(), -1.0f);
     reach_.emplace_back(models_[l]->num_points(), std::uint8_t{0});
   }
@@ -38,8 +40,13 @@ void TimeAdaptivity::refile() {
     for (auto& per_k : lists_)
       for (int p : per_k[l])
         if (h_.state(l, p) != NodeState::Active) time_level_[l][p] = -1;
-    for (int p : status_.active(l))
-      if (states_[l].free_point[p] && time_level_[l][p] < 0) time_level_[l][p] = courant_[l][p];
+    // The stable step of every particle follows the topology (interface mass and stiffness,
+    // contact): a particle whose level became too coarse for it moves finer at once.
+    for (int p : status_.active(l)) {
+      if (!states_[l].free_point[p]) continue;
+      courant_[l][p] = static_cast<std::int8_t>(stable_time_level(rules_, stable_dt_[l][p]));
+      if (time_level_[l][p] < courant_[l][p]) time_level_[l][p] = courant_[l][p];
+    }
   }
   rebuild_lists();
 }

@@ -30,13 +30,16 @@ class TimeAdaptivity {
   TimeAdaptivity(const Hierarchy& h, const StatusLists& lists,
                  const std::vector<const LevelModel*>& models,
                  const std::vector<LevelForceField*>& fields,
-                 const std::vector<PointState>& states, const TimeLevelRules& rules);
+                 const std::vector<PointState>& states,
+                 const std::vector<std::vector<double>>& stable_dt, const TimeLevelRules& rules);
 
   const TimeLevelRules& rules() const { return rules_; }
   const WCycle& schedule() const { return wc_; }
 
-  /// After the active sets changed (and at the start): points that became active get their
-  /// Courant level, points that left lose theirs. Only at a frame boundary.
+  /// After the active sets changed (and at the start): every active particle's stable level is
+  /// read again from `stable_dt` (s, per space level and point, kept up to date by the
+  /// simulation); points that became active start there, points on a coarser level move to it,
+  /// points that left lose theirs. Only at a frame boundary.
   void refile();
 
   /// One sub-step of the frame: its tick and the time levels it kicks (-1: none).
@@ -85,6 +88,7 @@ class TimeAdaptivity {
   std::vector<const LevelModel*> models_;
   std::vector<LevelForceField*> fields_;
   const std::vector<PointState>& states_;
+  const std::vector<std::vector<double>>& stable_dt_;
   TimeLevelRules rules_;
   WCycle wc_;
   int K_ = 0;     // the finest time level (rules.max_level)

@@ -2,15 +2,18 @@
 
 namespace mrsim {
 
+int stable_time_level(const TimeLevelRules& rules, double stable) {
+  const double allowed = rules.courant * stable;
+  int k = 0;
+  while (k < rules.max_level && rules.frame_dt / (1 << k) > allowed) ++k;
+  return k;
+}
+
 std::vector<std::int8_t> courant_levels(const LevelModel& model, const TimeLevelRules& rules) {
   std::vector<std::int8_t> level(model.num_points(), 0);
-  for (int i = 0; i < model.num_points(); ++i) {
-    const double allowed =
-        courant_step(model.law, rules.courant, rules.semi_implicit, model.min_edge[i]);
-    int k = 0;
-    while (k < rules.max_level && rules.frame_dt / (1 << k) > allowed) ++k;
-    level[i] = static_cast<std::int8_t>(k);
-  }
+  for (int i = 0; i < model.num_points(); ++i)
+    level[i] = static_cast<std::int8_t>(
+        stable_time_level(rules, stable_step_of(model.star[i], rules.semi_implicit)));
   return level;
 }
 

@@ -76,13 +76,31 @@ def test_computed_substeps(binary, scenario, tmp):
     check("substeps: %d" % n in written, "scenario.yaml records the computed substeps")
 
 
+def test_adapted_substeps(binary, scenario, tmp):
+    # The same step with time.adapt_substeps (the default): the frames take as many steps as
+    # the stable step estimate needs, and say so, instead of diverging.
+    out = os.path.join(tmp, "adapted")
+    r = run(binary, "run", scenario, "-o", out, "--set", "time.substeps=4",
+            "--set", "time.duration=0.1", "--set", "material.damping.psi=0")
+    check(r.returncode == 0, "too few substeps are raised, not diverged (exit %d): %s"
+          % (r.returncode, r.stderr.strip()[-200:]))
+    check("substeps instead of 4" in r.stderr, "and the change is said: " + r.stderr.strip()[-200:])
+    with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
+        kinds = [k.decode() if isinstance(k, bytes) else k for k in h5["/events/kind"][:]]
+    check("substeps" in kinds, "an event 'substeps' in log.h5")
+
+
 def test_divergence(binary, scenario, tmp):
     out = os.path.join(tmp, "diverged")
     r = run(binary, "run", scenario, "-o", out, "--set", "time.substeps=4",
-            "--set", "time.duration=1.0", "--set", "material.damping.psi=0")
+            "--set", "time.duration=1.0", "--set", "material.damping.psi=0",
+            "--set", "time.adapt_substeps=false")
     check(r.returncode == 1, "a run past the stability limit exits 1 (got %d)" % r.returncode)
     check("diverged at frame" in r.stderr, "the message names the frame: " + r.stderr.strip()[-200:])
-    check("exceeds the stable estimate" in r.stderr, "a warning announced the unstable step")
+    check("against its stable step estimate" in r.stderr or "stable step estimate in force" in r.stderr,
+          "and the stable step estimate in force: " + r.stderr.strip()[-300:])
+    check("exceeds time.courant x the stable step estimate" in r.stderr,
+          "a warning announced the unstable step")
     summary = json.load(open(os.path.join(out, "summary.json")))
     check(summary["status"] == "diverged", "summary.json records the divergence")
     with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
@@ -207,6 +225,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         test_exit_codes(args.binary, scenario)
         test_divergence(args.binary, scenario, tmp)
+        test_adapted_substeps(args.binary, scenario, tmp)
         test_computed_substeps(args.binary, scenario, tmp)
         test_threads_bit_identical(args.binary, scenario, tmp, 0.1, (1, 5))
         scenarios = os.path.join(args.source, "scenarios")

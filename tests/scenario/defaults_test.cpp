@@ -29,7 +29,8 @@ TEST(Defaults, EveryDefaultOfTheSchemaIsInjected) {
   EXPECT_EQ(doc["time"]["integrator"], "modified_euler");
   EXPECT_DOUBLE_EQ(doc["time"]["frame_dt"].get<double>(), 0.04);
   EXPECT_FALSE(doc["time"].contains("substeps"));  // computed from the meshes by the run
-  EXPECT_DOUBLE_EQ(doc["time"]["courant"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(doc["time"]["courant"].get<double>(), 1.0);
+  EXPECT_EQ(doc["time"]["adapt_substeps"], true);
   EXPECT_DOUBLE_EQ(doc["time"]["duration"].get<double>(), 1.0);
   EXPECT_DOUBLE_EQ(doc["time"]["divergence"]["energy_factor"].get<double>(), 1.0);
   EXPECT_EQ(doc["output"]["every"], 1);

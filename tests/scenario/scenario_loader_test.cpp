@@ -71,7 +71,8 @@ TEST(ScenarioLoader, MinimalScenarioGetsEveryDefault) {
   EXPECT_EQ(s.time.integrator, IntegratorKind::ModifiedEuler);
   EXPECT_EQ(s.time.frame_dt, 0.04);
   EXPECT_EQ(s.time.substeps, 0);  // computed from the meshes by the run
-  EXPECT_EQ(s.time.courant, 0.5);
+  EXPECT_EQ(s.time.courant, 1.0);
+  EXPECT_TRUE(s.time.adapt_substeps);
   EXPECT_EQ(s.time.duration, 1.0);
   EXPECT_EQ(s.time.divergence_energy_factor, 1.0);
   EXPECT_EQ(s.output.dir, "out/minimal");

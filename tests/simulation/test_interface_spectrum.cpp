@@ -11,6 +11,7 @@
 #include <Eigen/Eigenvalues>
 #include <complex>
 
+#include "coupled_operator.hpp"
 #include "hierarchy/hierarchy_fixture.hpp"
 #include "mesh/box_mesh.hpp"
 #include "simulation/hierarchical_simulation.hpp"
@@ -29,36 +30,13 @@ HierarchySetup clamped_beam_setup(const std::vector<TetMesh>& meshes, Coupling c
   return hs;
 }
 
-// K_eff (stiffness, N/m) over the free active DOFs, by unit probes of the linear (Cauchy) model.
-Eigen::MatrixXd coupled_stiffness(HierarchicalSimulation& sim, std::vector<std::pair<int, int>>& dofs) {
-  dofs.clear();
-  for (int l = 0; l < sim.num_levels(); ++l)
-    for (int p : sim.lists().active(l))
-      if (sim.state(l).free_point[p]) dofs.emplace_back(l, p);
-  const int n = static_cast<int>(dofs.size());
-  Eigen::MatrixXd K(3 * n, 3 * n);
-  const double h = 1e-6;
-  for (int j = 0; j < 3 * n; ++j) {
-    for (int l = 0; l < sim.num_levels(); ++l) {
-      for (auto& u : sim.state(l).u) u.setZero();
-      for (auto& v : sim.state(l).v) v.setZero();
-    }
-    sim.state(dofs[j / 3].first).u[dofs[j / 3].second][j % 3] = h;
-    sim.refresh_ghosts();
-    sim.compute_forces();
-    for (int i = 0; i < n; ++i)
-      for (int k = 0; k < 3; ++k) K(3 * i + k, j) = -sim.state(dofs[i].first).f[dofs[i].second][k] / h;
-  }
-  return K;
-}
-
 double max_growth_rate(HierarchicalSimulation& sim, double* asymmetry = nullptr) {
   std::vector<std::pair<int, int>> dofs;
-  const Eigen::MatrixXd K = coupled_stiffness(sim, dofs);
+  const Eigen::MatrixXd K = mrsim::testing::coupled_stiffness(sim, dofs);
   if (asymmetry) *asymmetry = (K - K.transpose()).norm() / K.norm();
   Eigen::MatrixXd A = K;
   for (size_t i = 0; i < dofs.size(); ++i)
-    A.middleRows(3 * i, 3) /= sim.model(dofs[i].first).mass[dofs[i].second];
+    A.middleRows(3 * i, 3) /= sim.inertia(dofs[i].first)[dofs[i].second].mass;
   Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
   double growth = 0;
   for (int i = 0; i < A.rows(); ++i)

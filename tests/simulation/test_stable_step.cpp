@@ -1,6 +1,7 @@
-// A scenario without time.substeps gets a stable step computed for it (issue 5 point 1, the
-// Courant part): the smallest power of two of steps per frame within C h_min / c_p of every
-// level that may become active, and a run at that step does not blow up.
+// A scenario without time.substeps gets a stable step computed for it (issue 5 point 1, issue
+// 15 point 2): the smallest power of two of steps per frame within the per-point stable step
+// estimate of every level that may become active (cells, damping, the tools' contact), a run at
+// that step does not blow up, and one that would need more than 2^30 steps is an input error.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,6 +9,9 @@
 
 #include "beam_fixture.hpp"
 #include "scenario/scenario.hpp"
+#include "core/error.hpp"
+#include "physics/level_model.hpp"
+#include "simulation/level_setup_from_scenario.hpp"
 #include "simulation/stable_step.hpp"
 
 using namespace mrsim;
@@ -34,12 +38,21 @@ TEST(StableStep, ShortestEdgeOfABoxIsItsSmallestCellSide) {
               1e-15);
 }
 
+// The smallest per-point estimate of a mesh alone (whole stars, no contact).
+double level_estimate(const TetMesh& mesh, const Scenario& sc, bool semi = false) {
+  const LevelModel m = build_level_model(mesh, material_law(sc.material));
+  double dt = INFINITY;
+  for (const PointInertia& p : m.star) dt = std::min(dt, stable_step_of(p, semi));
+  return dt;
+}
+
 TEST(StableStep, OmittedSubstepsAreThePowerOfTwoThatKeepsTheFinestLevelStable) {
   const TetMesh coarse = mrsim::testing::beam_mesh(10), fine = mrsim::testing::beam_mesh(20);
   const Scenario sc = beam_scenario(2);
   const Scenario out = with_stable_substeps(sc, {&coarse, &fine});
-  const double c = std::sqrt((sc.material.lambda + 2 * sc.material.mu) / 1000);
-  const double limit = 0.5 * 0.005 / c;  // finest level: 5 mm edges
+  const double limit = level_estimate(fine, sc);  // the finest level sets it
+  EXPECT_LT(limit, level_estimate(coarse, sc));
+  EXPECT_DOUBLE_EQ(stable_step(sc, {&coarse, &fine}).dt, limit);
   const double dt = 0.02 / out.time.substeps;
   EXPECT_LE(dt, limit);
   EXPECT_GT(2 * dt, limit);  // the smallest such power of two
@@ -56,6 +69,56 @@ TEST(StableStep, OmittedSubstepsAreThePowerOfTwoThatKeepsTheFinestLevelStable) {
   Scenario given = sc;
   given.time.substeps = 7;
   EXPECT_EQ(with_stable_substeps(given, {&coarse, &fine}).time.substeps, 7);
+}
+
+TEST(StableStep, DampingShortensTheComputedStepAndIsNamedAsTheCause) {
+  const TetMesh mesh = mrsim::testing::beam_mesh(10);
+  Scenario sc = beam_scenario(1);
+  sc.material.psi = 200;  // Pa·s: ζ of the highest mode well above 1
+  const StableStep damped = stable_step(sc, {&mesh});
+  EXPECT_LT(damped.dt, 0.5 * stable_step(beam_scenario(1), {&mesh}).dt);
+  EXPECT_NE(damped.cause.find("damping"), std::string::npos) << damped.cause;
+  EXPECT_GT(with_stable_substeps(sc, {&mesh}).time.substeps,
+            with_stable_substeps(beam_scenario(1), {&mesh}).time.substeps);
+}
+
+TEST(StableStep, AStiffToolPenaltyShortensTheComputedStepAndIsNamedAsTheCause) {
+  const TetMesh mesh = mrsim::testing::beam_mesh(10);
+  Scenario sc = beam_scenario(1);
+  sc.resolved["time"]["duration"] = 0.1;
+  sc.time.duration = 0.1;
+  ToolSpec tool;
+  tool.name = "probe";
+  tool.shape = "sphere";
+  tool.radius = 0.005;
+  tool.keyframes = {{0.0, Vec3(0.09, 0.01, 0.025), {1, 0, 0, 0}},
+                    {0.1, Vec3(0.09, 0.01, 0.019), {1, 0, 0, 0}}};
+  tool.stiffness = 1e11;  // Pa/m: 10⁴ times `auto` on these 5 mm cells
+  sc.tools.push_back(tool);
+  const StableStep s = stable_step(sc, {&mesh});
+  EXPECT_LT(s.dt, 0.2 * stable_step(beam_scenario(1), {&mesh}).dt);
+  EXPECT_NE(s.cause.find("contact penalty"), std::string::npos) << s.cause;
+  // `auto` leaves the cells in charge.
+  sc.tools[0].stiffness = 0;
+  EXPECT_NE(stable_step(sc, {&mesh}).cause.find("cells"), std::string::npos);
+}
+
+TEST(StableStep, AStepBeyondTheCapIsAnInputErrorNamingTheCause) {
+  // A mesh of 1e-12 m cells (a unit mistake): 2^30 substeps would still be 68 times too large.
+  TetMesh mesh = make_box_mesh(Vec3(0, 0, 0), Vec3(1e-11, 2e-12, 2e-12), 10, 2, 2);
+  const Scenario sc = beam_scenario(1);
+  try {
+    with_stable_substeps(sc, {&mesh});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("more than the 1073741824"), std::string::npos) << m;
+    EXPECT_NE(m.find("level 0, point"), std::string::npos) << m;
+    EXPECT_NE(m.find("set by the cells"), std::string::npos) << m;
+    EXPECT_NE(m.find("object.units"), std::string::npos) << m;
+  } catch (...) {
+    FAIL() << "not an InputError";
+  }
 }
 
 TEST(StableStep, TheComputedStepRunsTheBeamWithoutGrowth) {

@@ -1,0 +1,42 @@
+#pragma once
+// Interface mass consistent with interface stiffness (docs/hierarchy.md "Interface mass").
+// Under the energy couplings a tet that a level simulates with weight w (its active share, or
+// the patch-test weight) contributes w of its strain energy, and its forces reach the level's
+// active points and ghosts, the ghosts' then passed to their sources. Its mass follows the
+// same path, or a ghost that coincides with an active point of another level hands that point
+// a whole tet star's stiffness without the matching mass (nested levels then blow up at their
+// own stable step). So each tet gives w ρV/4 to each of its four vertices, and a ghost with
+// interpolation weights b passes b_k² of its mass to source k: the diagonal of its consistent
+// mass Jᵀ m J, exact for a ghost that coincides with a source (b = 1). Row sums (b_k, the
+// total kept) put whole coarse stars on the four tiny vertices of a child tet (130 times their
+// own mass on the liver levels), whose relative motion the ghost does not even see: slow
+// spurious modes kept liver_press refining. The inertial mass is therefore a little below the
+// simulated volume's at interfaces; gravity uses the mass passed on with b (the gradient of
+// the potential energy, total kept). The energy bounds of stiffness and damping
+// (physics/stable_step_bound.hpp) travel with |b_k| × Σ|b| (Cauchy–Schwarz:
+// |Σ b u|² ≤ Σ|b| Σ|b| |u|²), so every active point knows the stable step of what it carries.
+#include <cstdint>
+#include <vector>
+
+#include "hierarchy/status_lists.hpp"
+#include "physics/level_model.hpp"
+
+namespace mrsim {
+
+struct InertiaLevel {
+  const LevelModel* model = nullptr;
+  const std::vector<int>* tets = nullptr;       // live tets (read when weighted)
+  const std::vector<double>* weight = nullptr;  // per tet; nullptr: no ghosts, whole stars
+  const std::vector<std::uint8_t>* free_point = nullptr;  // fixed ghosts pass nothing on
+};
+
+/// out[l][p] for the active points of every level: the star's own values where the level has
+/// no ghosts (bit for bit the lumped mass), the weighted and transferred values otherwise.
+/// Ghost entries are left as scratch. `transfer`: the energy couplings (ghosts pass their share
+/// on); without it (the thesis' force coupling) every active point keeps its own star.
+/// O(active + ghosts + live tets).
+void interface_inertia(const Hierarchy& h, const StatusLists& lists,
+                       const std::vector<InertiaLevel>& levels, bool transfer,
+                       std::vector<std::vector<PointInertia>>& out);
+
+}  // namespace mrsim

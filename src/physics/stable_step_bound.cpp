@@ -1,0 +1,57 @@
+#include "physics/stable_step_bound.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <limits>
+
+namespace mrsim {
+
+namespace {
+
+// V (p |G|_F² + 2 q σ_max(G)²): (p, q) = (λ, μ), or (φ, ψ) for damping.
+double energy_bound(const TetGradients& g, double V, double p, double q) {
+  Mat3 GGt = Mat3::Zero();
+  for (const Vec3& ga : g) GGt.noalias() += ga * ga.transpose();
+  Eigen::SelfAdjointEigenSolver<Mat3> es;
+  es.computeDirect(GGt, Eigen::EigenvaluesOnly);
+  return V * (p * GGt.trace() + 2 * q * es.eigenvalues().maxCoeff());
+}
+
+}  // namespace
+
+TetEnergyBounds tet_energy_bounds(const TetGeometry& geo, const MaterialLaw& law) {
+  const std::size_t n = geo.tets.size();
+  TetEnergyBounds out;
+  out.stiffness.resize(n);
+  out.damping.assign(n, 0.0);
+  for (std::size_t t = 0; t < n; ++t) {
+    out.stiffness[t] = energy_bound(geo.grad[t], geo.volume[t], law.lambda, law.mu);
+    if (law.damped()) out.damping[t] = energy_bound(geo.grad[t], geo.volume[t], law.phi, law.psi);
+  }
+  return out;
+}
+
+std::vector<PointInertia> star_inertia(const PointAdjacency& adj, const TetEnergyBounds& tets,
+                                       const std::vector<double>& mass) {
+  const int n = adj.num_points();
+  std::vector<PointInertia> out(n);
+  for (int i = 0; i < n; ++i) {
+    PointInertia& p = out[i];
+    p.mass = p.gravity_mass = mass[i];
+    for (int s = adj.inc_start[i]; s < adj.inc_start[i + 1]; ++s) {
+      p.stiffness += tets.stiffness[adj.inc_tet[s]];
+      p.damping += tets.damping[adj.inc_tet[s]];
+    }
+  }
+  return out;
+}
+
+double stable_step_of(const PointInertia& p, bool semi_implicit) {
+  if (p.mass <= 0) return 0;
+  const double w2 = p.stiffness / p.mass, gamma = p.damping / p.mass;
+  const double root = std::sqrt(gamma * gamma + (semi_implicit ? 1.0 : 4.0) * w2);
+  const double denom = gamma + root;
+  return denom > 0 ? 4.0 / denom : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace mrsim
