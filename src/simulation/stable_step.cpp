@@ -141,6 +141,9 @@ Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMes
         << stable.dt << " s, set by " << stable.cause;
   std::ostringstream os;
   os.precision(4);
+  if (sc.time.courant > 1)
+    warn("time.courant " + std::to_string(sc.time.courant) +
+         " > 1: steps above the stable step estimate (for stability studies)");
   if (sc.time.substeps > 0) {
     const double dt = sc.time.frame_dt / sc.time.substeps;
     if (dt > allowed) {

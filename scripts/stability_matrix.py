@@ -1,0 +1,272 @@
+#!/usr/bin/python3
+"""Stability test matrix (issue 15 point 3, docs/integrators.md "Stability matrix").
+
+For every case (the bundled scenarios, and liver_probe on hierarchies whose finest level has
+~15k, ~60k and ~125k tets), every integrator, psi as given and 20 Pa.s, with and without time
+levels:
+
+1. `time.substeps` left out: mrsim computes the step; the run must not diverge.
+2. The true limit, measured: without time levels the smallest number of substeps per frame
+   that still runs (bisection, `time.adapt_substeps=false` so the step stays what it is asked
+   to be), as a step against mrsim's estimate: for the explicit integrators true limit /
+   estimate must lie in [1.0, 2.5]. With time levels the largest `time.courant` that still
+   runs, the velocity-change rule switched off (it would refine the particles that start to
+   blow up): every particle's step is the largest power-of-two division of the frame within
+   courant x its estimate, so that factor is between 1 and 2 times the true ratio: [1.0, 5.0].
+   The semi-implicit step (eq. 5.1) damps what would grow: its runs are only required never
+   to be optimistic (>= 1.0); the measured factor is reported.
+
+    scripts/stability_matrix.py [--binary build/mrsim] [--work build/stability]
+                                [--cases NAME...] [--integrators NAME...] [--psi given|VALUE...]
+                                [--time-levels off|on...] [--duration S] [--quick] [--table FILE]
+
+--quick: the beam cases, two integrators, shortened runs (what ctest runs, py.test_stability).
+--table: write the markdown table there (docs/integrators.md quotes it).
+Exit status: 0 when every automatic run finished and every ratio is in the band, 1 otherwise.
+Generated meshes (mrsim mesh on the bundled liver surface) are cached in --work.
+"""
+import argparse
+import json
+import math
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+import yaml
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+SCENARIOS = ROOT / "scenarios"
+BAND = (1.0, 2.5)       # explicit, one global step: true limit / estimate
+TIME_LEVEL_BAND = (1.0, 5.0)  # time levels: the step is the estimate rounded to a power of two
+
+
+def band(row):
+    if row["integrator"].startswith("semi_implicit"):
+        return (1.0, math.inf)
+    return TIME_LEVEL_BAND if row["time_levels"] else BAND
+INTEGRATORS = ["modified_euler", "stoermer_verlet", "semi_implicit"]
+ESTIMATE = re.compile(r"stable step estimate ([0-9.eE+-]+) s")
+COMPUTED = re.compile(r"time\.substeps computed: (\d+)")
+
+
+def bundled_cases():
+    names = ["beam", "beam_adaptive", "liver_press", "liver_probe", "little_man_shake",
+             "volume_lambda_0", "volume_lambda_5e4", "volume_lambda_5e5"]
+    return {n: {"scenario": SCENARIOS / (n + ".yaml"), "finest": None} for n in names}
+
+
+def hierarchy_cases():
+    """liver_probe with its finest level replaced by a finer mesh of the same surface."""
+    return {
+        "liver_probe_15k": {"scenario": SCENARIOS / "liver_probe.yaml", "finest": None},
+        "liver_probe_60k": {"scenario": SCENARIOS / "liver_probe.yaml", "finest": 60000},
+        "liver_probe_125k": {"scenario": SCENARIOS / "liver_probe.yaml", "finest": 125000},
+    }
+
+
+def finest_mesh(binary, work, tets):
+    """A liver level of about `tets` tets, made once by `mrsim mesh` and kept in `work`."""
+    prefix = work / "meshes" / ("liver%d" % tets)
+    mesh = pathlib.Path(str(prefix) + "_L0.vtu")
+    if not mesh.exists():
+        prefix.parent.mkdir(parents=True, exist_ok=True)
+        surface = SCENARIOS / "meshes" / "liver_surface_cgal_h10_mm.off"
+        subprocess.run([str(binary), "mesh", str(surface), "--units", "mm", "--tets", str(tets),
+                        "-o", str(prefix), "-q"], check=True)
+    return mesh
+
+
+def absolute_paths(doc, folder):
+    """Mesh, skin and trajectory files relative to the original scenario's folder."""
+    for level in doc["object"]["levels"]:
+        level["mesh"] = str((folder / level["mesh"]).resolve())
+    skin = doc["object"].get("skin")
+    if isinstance(skin, dict) and "file" in skin:
+        skin["file"] = str((folder / skin["file"]).resolve())
+    tools = doc.get("tools", [doc["tool"]] if "tool" in doc else [])
+    for tool in tools:
+        trajectory = tool.get("trajectory")
+        if isinstance(trajectory, dict) and "csv" in trajectory:
+            trajectory["csv"] = str((folder / trajectory["csv"]).resolve())
+
+
+def prepare(binary, work, name, case, duration):
+    """The case's scenario without time.substeps, paths made absolute, written to `work`."""
+    doc = yaml.safe_load(case["scenario"].read_text())
+    absolute_paths(doc, case["scenario"].parent)
+    doc["time"].pop("substeps", None)
+    if case["finest"]:
+        doc["object"]["levels"][-1]["mesh"] = str(finest_mesh(binary, work, case["finest"]))
+    if duration:
+        doc["time"]["duration"] = min(float(doc["time"].get("duration", 1.0)), duration)
+    path = work / (name + ".yaml")
+    path.write_text(yaml.safe_dump(doc, sort_keys=False))
+    return path, float(doc["time"].get("frame_dt", 0.04))
+
+
+def settings(integrator, psi, time_levels):
+    s = ["time.integrator=" + integrator, "adaptivity.time.enabled=" + str(time_levels).lower(),
+         "output.vtk=false"]
+    if psi is not None:
+        s.append("material.damping.psi=%r" % psi)
+    return s
+
+
+def mrsim(binary, command, scenario, sets, out=None):
+    args = [str(binary), command, str(scenario)]
+    if out is not None:
+        args += ["-o", str(out), "--quiet"]
+    for s in sets:
+        args += ["--set", s]
+    t0 = time.time()
+    r = subprocess.run(args, capture_output=True, text=True)
+    if out is not None and pathlib.Path(out).exists():
+        shutil.rmtree(out)
+    return r, time.time() - t0
+
+
+def runs(binary, scenario, sets, out):
+    """True when the run finishes; raises on anything but a divergence (exit 1 'diverged')."""
+    r, _ = mrsim(binary, "run", scenario, sets, out)
+    if r.returncode == 0:
+        return True
+    if r.returncode == 1 and "diverged" in r.stderr:
+        return False
+    raise RuntimeError("mrsim run %s %s: exit %d: %s" % (scenario, " ".join(sets), r.returncode,
+                                                        r.stderr.strip()[-400:]))
+
+
+def smallest_stable_substeps(binary, scenario, sets, out, stable):
+    """Smallest n with frame_dt / n stable, to 5 %, starting from a stable n."""
+    hi = stable
+    lo = max(1, stable // 2)
+    while lo > 1 and runs(binary, scenario, sets + ["time.substeps=%d" % lo], out):
+        hi, lo = lo, max(1, lo // 2)
+    if lo == 1 and runs(binary, scenario, sets + ["time.substeps=1"], out):
+        return 1
+    while hi > lo * 1.05 and hi - lo > 1:
+        mid = int(round(math.sqrt(lo * hi)))
+        mid = min(max(mid, lo + 1), hi - 1)
+        if runs(binary, scenario, sets + ["time.substeps=%d" % mid], out):
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
+def largest_stable_courant(binary, scenario, sets, out, top=8.0):
+    """Largest time.courant that still runs (every particle's step scaled), to 5 %."""
+    lo, hi = 1.0, 2.0
+    while hi <= top and runs(binary, scenario, sets + ["time.courant=%r" % hi], out):
+        lo, hi = hi, hi * 2
+    if hi > top:
+        return lo
+    while hi > lo * 1.05:
+        mid = math.sqrt(lo * hi)
+        if runs(binary, scenario, sets + ["time.courant=%.4f" % mid], out):
+            lo = mid
+        else:
+            hi = mid
+    return lo
+
+
+def measure(binary, work, name, scenario, frame_dt, integrator, psi, time_levels):
+    sets = settings(integrator, psi, time_levels)
+    out = work / "run"
+    checked, _ = mrsim(binary, "check", scenario, sets)
+    if checked.returncode != 0:
+        raise RuntimeError("mrsim check %s: %s" % (name, checked.stderr.strip()[-400:]))
+    estimate = float(ESTIMATE.search(checked.stderr).group(1))
+    substeps = int(COMPUTED.search(checked.stderr).group(1))
+    r, seconds = mrsim(binary, "run", scenario, sets, out)
+    row = {"case": name, "integrator": integrator, "psi": psi, "time_levels": time_levels,
+           "substeps": substeps, "estimate": estimate, "auto_exit": r.returncode,
+           "auto_seconds": round(seconds, 1)}
+    if time_levels:
+        fixed = sets + ["adaptivity.time.velocity_change=1.0e+6"]
+        row["limit_factor"] = largest_stable_courant(binary, scenario, fixed, out)
+        row["ratio"] = row["limit_factor"]
+    else:
+        fixed = sets + ["time.adapt_substeps=false"]
+        n = smallest_stable_substeps(binary, scenario, fixed, out, substeps)
+        row["limit_substeps"] = n
+        row["ratio"] = frame_dt / n / estimate
+    lo, hi = band(row)
+    row["band"] = [lo, hi if math.isfinite(hi) else None]
+    row["ok"] = r.returncode == 0 and lo <= row["ratio"] <= hi
+    return row
+
+
+def table(rows):
+    lines = ["| case | integrator | ψ (Pa·s) | time levels | substeps (auto) | estimate (s) | "
+             "automatic run | true limit | true limit / estimate | band |",
+             "|---|---|---:|---|---:|---:|---|---|---:|---|"]
+    for r in rows:
+        limit = ("courant × %.2f" % r["limit_factor"] if r["time_levels"]
+                 else "%d substeps" % r["limit_substeps"])
+        lo, hi = r["band"]
+        lines.append("| %s | %s | %s | %s | %d | %.3g | %s | %s | %.2f %s | [%g, %s] |" % (
+            r["case"], r["integrator"], "as given" if r["psi"] is None else r["psi"],
+            "on" if r["time_levels"] else "off", r["substeps"], r["estimate"],
+            "finished" if r["auto_exit"] == 0 else "**exit %d**" % r["auto_exit"], limit,
+            r["ratio"], "✓" if r["ok"] else "✗", lo, "∞" if hi is None else "%g" % hi))
+    return "\n".join(lines) + "\n"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--binary", default=str(ROOT / "build" / "mrsim"))
+    ap.add_argument("--work", default=str(ROOT / "build" / "stability"))
+    ap.add_argument("--cases", nargs="*", help="case names (default: all)")
+    ap.add_argument("--quick", action="store_true", help="the beam cases, short runs")
+    ap.add_argument("--duration", type=float, help="cap every run at this simulated time (s)")
+    ap.add_argument("--integrators", nargs="*", help="default: %s" % " ".join(INTEGRATORS))
+    ap.add_argument("--psi", nargs="*", help="'given' and/or values in Pa.s (default: given 20)")
+    ap.add_argument("--time-levels", nargs="*", choices=["off", "on"], help="default: off on")
+    ap.add_argument("--table", help="write the markdown table to this file")
+    args = ap.parse_args()
+    binary = pathlib.Path(args.binary).resolve()
+    work = pathlib.Path(args.work).resolve()
+    work.mkdir(parents=True, exist_ok=True)
+    cases = {**bundled_cases(), **hierarchy_cases()}
+    integrators, psis, duration = INTEGRATORS, [None, 20.0], args.duration
+    if args.quick:
+        cases = {n: cases[n] for n in ["beam", "beam_adaptive"]}
+        integrators, psis, duration = ["modified_euler", "semi_implicit"], [None], 0.1
+    if args.integrators:
+        integrators = args.integrators
+    if args.psi:
+        psis = [None if p == "given" else float(p) for p in args.psi]
+    modes = [m == "on" for m in (args.time_levels or ["off", "on"])]
+    if args.cases:
+        unknown = [n for n in args.cases if n not in cases]
+        if unknown:
+            raise SystemExit("unknown case(s): %s (known: %s)" % (", ".join(unknown),
+                                                                   ", ".join(cases)))
+        cases = {n: cases[n] for n in args.cases}
+    rows = []
+    for name, case in cases.items():
+        scenario, frame_dt = prepare(binary, work, name, case, duration)
+        for integrator in integrators:
+            for psi in psis:
+                for time_levels in modes:
+                    row = measure(binary, work, name, scenario, frame_dt, integrator, psi,
+                                  time_levels)
+                    rows.append(row)
+                    print(json.dumps(row), flush=True)
+    (work / "stability.json").write_text(json.dumps(rows, indent=1))
+    text = table(rows)
+    if args.table:
+        pathlib.Path(args.table).write_text(text)
+    print(text)
+    bad = [r for r in rows if not r["ok"]]
+    print("%d passed, %d failed" % (len(rows) - len(bad), len(bad)))
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
