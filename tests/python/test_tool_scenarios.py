@@ -361,7 +361,8 @@ def test_shared_points_warning(binary, tmp):
                 "fixed:\n  - box: {min: [-1, -1, -1], max: [1, 1, 1.0e-4]}\n"
                 "time: {frame_dt: 0.01, duration: 0.01}\n")
     r = cli.run(binary, "run", path, "-o", os.path.join(tmp, "nested_out"),
-                "--set", "time.duration=0.2", "--set", "adaptivity.space.refine_above=1.0e-4")
+                "--set", "time.duration=0.2", "--set", "adaptivity.space.refine_above=1.0e-4",
+                "--set", "adaptivity.space.coarsen_below=2.5e-5")
     events = []
     if r.returncode == 0:
         with h5py.File(os.path.join(tmp, "nested_out", "log.h5"), "r") as h5:
