@@ -60,6 +60,8 @@ struct FrameRecord {
   double kinetic_energy = 0;       // J
   double elastic_energy = 0;       // J
   double wall_time = 0;            // s, wall clock spent simulating this frame (0 at frame 0)
+  double stable_step = 0;          // s, the smallest stable step estimate in force at its end
+  double step = 0;                 // s, the finest step the frame took
   Vec3 support_reaction = Vec3::Zero();  // N, force the fixed points exert on the body
   std::vector<std::int64_t> active;             // [L]
   std::vector<std::int64_t> ghosts;             // [L]

@@ -88,6 +88,15 @@ FrameTable::FrameTable(hid_t file_id, std::size_t levels,
   wall_time_ = {g, "/frames",
                 scalar_spec<double>("wall_time", "s", "wall clock spent simulating this frame"),
                 file_};
+  stable_step_ = {g, "/frames",
+                  scalar_spec<double>("stable_step", "s",
+                                      "smallest stable step estimate of the active points at the "
+                                      "end of the frame (docs/integrators.md)"),
+                  file_};
+  step_ = {g, "/frames",
+           scalar_spec<double>("step", "s", "finest step the frame took (frame_dt / substeps, or "
+                                            "the finest time level)"),
+           file_};
   active_ = {g, "/frames", per_level_spec("active", levels, "active points per level"), file_};
   ghosts_ = {g, "/frames", per_level_spec("ghosts", levels, "ghost points per level"), file_};
   force_evaluations_ = {g, "/frames",
@@ -109,6 +118,8 @@ void FrameTable::append(const FrameRecord& record) {
   append_one(kinetic_energy_, record.kinetic_energy);
   append_one(elastic_energy_, record.elastic_energy);
   append_one(wall_time_, record.wall_time);
+  append_one(stable_step_, record.stable_step);
+  append_one(step_, record.step);
   active_.append(std::span<const std::int64_t>(record.active));
   ghosts_.append(std::span<const std::int64_t>(record.ghosts));
   force_evaluations_.append(std::span<const std::int64_t>(record.force_evaluations));
@@ -120,7 +131,8 @@ void FrameTable::append(const FrameRecord& record) {
 }
 
 void FrameTable::close() {
-  for (ExtendibleDataset* d : {&time_, &kinetic_energy_, &elastic_energy_, &wall_time_, &active_,
+  for (ExtendibleDataset* d : {&time_, &kinetic_energy_, &elastic_energy_, &wall_time_,
+                               &stable_step_, &step_, &active_,
                                &ghosts_, &force_evaluations_, &support_reaction_, &time_levels_,
                                &time_level_evaluations_, &frame_}) {
     d->close();

@@ -111,6 +111,8 @@ class FrameWriter {
     rec.kinetic_energy = e.kinetic;
     rec.elastic_energy = e.elastic;
     rec.wall_time = frame_wall;
+    rec.stable_step = sim_.stable_step_in_force().dt;
+    rec.step = sim_.step();
     rec.support_reaction = support_reaction(sim_);
     for (int l = 0; l < L_; ++l) {
       fill_status(l);
