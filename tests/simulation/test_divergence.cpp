@@ -1,0 +1,57 @@
+// The divergence message (issue 15 point 4): it names the level and the point, where the point
+// sits in the hierarchy (the usual culprit: a coarse point next to the fine region), and its
+// step against its stable step estimate in force, so that a user knows what to change.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hierarchy/hierarchy_fixture.hpp"
+#include "simulation/divergence.hpp"
+
+using namespace mrsim;
+
+namespace {
+
+HierarchySetup setup(double dt) {
+  HierarchySetup hs;
+  hs.law.lambda = 5e4;
+  hs.law.mu = 1e4;
+  hs.dt = dt;
+  return hs;
+}
+
+}  // namespace
+
+TEST(Divergence, MessageNamesThePlaceAndTheStepAgainstTheEstimate) {
+  const auto meshes = mrsim::testing::jittered_box_levels({{3, 2, 2}, {6, 4, 3}}, 5, 0.2);
+  HierarchicalSimulation sim({&meshes[0], &meshes[1]}, setup(1e-2));
+  sim.split(0, 0);
+  sim.apply_changes();
+  // An active coarse point with a subdivided neighbour.
+  const PointAdjacency& adj = sim.model(0).adj;
+  int coarse = -1;
+  for (int p : sim.lists().active(0))
+    for (int e = adj.nbr_start[p]; e < adj.nbr_start[p + 1] && coarse < 0; ++e)
+      if (sim.hierarchy().state(0, adj.nbr[e]) == NodeState::GhostSub) coarse = p;
+  ASSERT_GE(coarse, 0);
+  sim.state(0).v[coarse].x() = NAN;
+  const DivergenceGuard guard = DivergenceGuard::for_level(sim.model(0), 1.0);
+  const auto why = guard.check(sim, 0.0);
+  ASSERT_TRUE(why.has_value());
+  EXPECT_NE(why->find("point " + std::to_string(coarse) + " of level 0"), std::string::npos) << *why;
+  EXPECT_NE(why->find("a coarse point next to the fine region"), std::string::npos) << *why;
+  EXPECT_NE(why->find("against its stable step estimate"), std::string::npos) << *why;
+  // 10 ms is far above this point's estimate: the message says so and what to do.
+  EXPECT_GT(1e-2, 2 * sim.stable_steps(0)[coarse]);
+  EXPECT_NE(why->find("above it: raise time.substeps"), std::string::npos) << *why;
+}
+
+TEST(Divergence, EnergyMessageNamesTheStableStepInForce) {
+  const auto meshes = mrsim::testing::jittered_box_levels({{3, 2, 2}}, 5, 0.2);
+  HierarchicalSimulation sim({&meshes[0]}, setup(1e-6));
+  const DivergenceGuard guard = DivergenceGuard::for_level(sim.model(0), 1.0);
+  const auto why = guard.check(sim, 2 * guard.energy_bound);
+  ASSERT_TRUE(why.has_value());
+  EXPECT_NE(why->find("stable step estimate in force"), std::string::npos) << *why;
+  EXPECT_NE(why->find("inside level 0's region"), std::string::npos) << *why;
+}
