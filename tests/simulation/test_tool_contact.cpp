@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "contact_fixture.hpp"
+#include "simulation/hierarchy_diagnostics.hpp"
 #include "simulation/space_adaptivity.hpp"
 #include "simulation/stable_step.hpp"
 
@@ -28,10 +29,10 @@ struct SlidingProbe {
   double frame = 0.02;
   int steps_per_frame = 0;
 
-  explicit SlidingProbe(Coupling coupling) {
-    // Odd cell counts: the levels share only the box's corners (see the note in
-    // docs/contact.md on coincident points).
-    for (int n : {5, 9, 17})
+  // Odd cell counts: the levels share only the box's corners. Even ones (4, 8, 16) nest them:
+  // every grid point of a level is a point of the next (docs/hierarchy.md, interface mass).
+  explicit SlidingProbe(Coupling coupling, std::array<int, 3> cells = {5, 9, 17}) {
+    for (int n : cells)
       meshes.push_back(make_box_mesh(Vec3(-0.01, -0.01, -0.01), Vec3(0.01, 0.01, 0), n, n, (n + 1) / 2));
     IndentedBlock material;
     const double R = 4e-3, depth = 1e-3;
@@ -135,6 +136,48 @@ TEST(ToolContact, SlidingProbeActionReactionRefinementAndNoForceSpikes) {
 // active or ghost, has exactly that point's displacement), and the contact forces reach the
 // active points through the transpose of that map: for any virtual displacement of the active
 // points the work on the skin equals the work of the forces the simulation applied.
+TEST(ToolContact, NestedLevelsRunTheSlidingProbeAtTheirStableStepEstimate) {
+  // Issue 15 point 1: with lumped masses, nested 4/8/16-cell levels blew up under the energy
+  // couplings at the Courant estimate when the finest level first became active, and ran at a
+  // quarter of it. With interface masses they run at the largest stable step estimate of the
+  // level points and the contact at set-up, fixed (no adaptation), for the whole slide.
+  for (Coupling coupling : {Coupling::Energy, Coupling::EnergyConsistent}) {
+    SlidingProbe probe(coupling, {4, 8, 16});
+    HierarchicalSimulation probe_sim(probe.pointers(), probe.setup);
+    // The set-up estimate of every point of every level with its whole star (the contact bound
+    // of simulation/stable_step.cpp would only lower it), fixed for the whole run.
+    double dt = INFINITY;
+    for (int l = 0; l < probe_sim.num_levels(); ++l)
+      for (const PointInertia& p : probe_sim.model(l).star) dt = std::min(dt, stable_step_of(p, false));
+    probe.steps_per_frame = static_cast<int>(std::ceil(probe.frame / dt));
+    probe.setup.dt = probe.frame / probe.steps_per_frame;
+    probe.setup.steps_per_frame = probe.steps_per_frame;
+    HierarchicalSimulation sim(probe.pointers(), probe.setup);
+    SpaceAdaptivity adapt(probe.adaptivity(), sim);
+    std::vector<HierarchyEvent> events;
+    int splits = 0;
+    double fine_active = 0, peak = 0;
+    for (int frame = 1; frame <= 30; ++frame) {
+      sim.advance_frame();
+      events.clear();
+      adapt.update(sim, frame, events);
+      for (const HierarchyEvent& e : events) splits += e.kind == "split";
+      fine_active = std::max(fine_active, static_cast<double>(sim.lists().active(2).size()));
+      peak = std::max(peak, sim.contact()->tool_force(0).norm());
+      for (int l = 0; l < sim.num_levels(); ++l)
+        for (int p : sim.lists().active(l))
+          ASSERT_TRUE(sim.state(l).v[p].allFinite()) << "frame " << frame << " level " << l;
+    }
+    EXPECT_GT(splits, 10);
+    EXPECT_GT(fine_active, 0);
+    const Energies e = hierarchy_energies(sim);
+    EXPECT_LT(e.kinetic, 1e-3) << "a growing mode";  // pressed slowly: micro-joules at most
+    EXPECT_GT(peak, 0.0);
+    RecordProperty("step_over_old_courant", std::to_string(probe.setup.dt /
+                                                           courant_dt(probe.meshes.back(), probe.setup.law)));
+  }
+}
+
 TEST(ToolContact, SkinFollowsTheHierarchyAndContactForcesDoItsVirtualWork) {
   SlidingProbe probe(Coupling::Energy);
   HierarchicalSimulation sim(probe.pointers(), probe.setup);
