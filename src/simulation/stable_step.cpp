@@ -148,6 +148,15 @@ Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMes
   if (sc.time.courant > 1)
     warn("time.courant " + std::to_string(sc.time.courant) +
          " > 1: steps above the stable step estimate (for stability studies)");
+  // More than the cap would never finish a frame (time.adapt_substeps would keep doubling).
+  const double needed = sc.time.frame_dt / allowed * (time_levels ? 4 : 1);
+  if (!(needed <= kMaxSubsteps) && (sc.time.substeps == 0 || sc.time.adapt_substeps)) {
+    os << "time.substeps: the stable step needs " << needed << " steps per frame of "
+       << sc.time.frame_dt << " s, more than the " << kMaxSubsteps << " mrsim allows ("
+       << where.str() << (time_levels ? "; x4 for the time levels" : "")
+       << "); check the mesh units (object.units), the material and the tools";
+    throw InputError(os.str());
+  }
   if (sc.time.substeps > 0) {
     const double dt = sc.time.frame_dt / sc.time.substeps;
     if (dt > allowed) {
@@ -163,14 +172,7 @@ Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMes
   const int extra = time_levels ? 4 : 1;
   long long substeps = 1;
   while (substeps <= kMaxSubsteps && sc.time.frame_dt / substeps > allowed) substeps *= 2;
-  substeps *= extra;
-  if (substeps > kMaxSubsteps) {
-    os << "time.substeps: the stable step needs " << sc.time.frame_dt / allowed * extra
-       << " steps per frame of " << sc.time.frame_dt << " s, more than the " << kMaxSubsteps
-       << " mrsim allows (" << where.str() << (time_levels ? "; x4 for the time levels" : "")
-       << "); check the mesh units (object.units), the material and the tools";
-    throw InputError(os.str());
-  }
+  substeps = std::min<long long>(substeps * extra, kMaxSubsteps);  // within the cap (above)
   Scenario out = sc;
   out.time.substeps = static_cast<int>(substeps);
   out.resolved["time"]["substeps"] = out.time.substeps;

@@ -119,6 +119,13 @@ TEST(StableStep, AStepBeyondTheCapIsAnInputErrorNamingTheCause) {
   } catch (...) {
     FAIL() << "not an InputError";
   }
+  // Given substeps: the run would keep doubling them (time.adapt_substeps), so the same error;
+  // with the step held fixed on purpose, only the warning.
+  Scenario given = sc;
+  given.time.substeps = 512;
+  EXPECT_THROW(with_stable_substeps(given, {&mesh}), InputError);
+  given.time.adapt_substeps = false;
+  EXPECT_EQ(with_stable_substeps(given, {&mesh}).time.substeps, 512);
 }
 
 TEST(StableStep, TheComputedStepRunsTheBeamWithoutGrowth) {
