@@ -72,8 +72,8 @@ void interface_inertia(const Hierarchy& h, const StatusLists& lists,
     pass_on(lists.ghost_iface(l), h.links(l).parent_tet, *h.level(l - 1).mesh,
             *levels[l].free_point, out[l], out[l - 1]);
   for (int l = 0; l + 1 < L; ++l)
-    pass_on(lists.ghost_sub(l), h.links(l).child_tet, *h.level(l + 1).mesh,
-            *levels[l].free_point, out[l], out[l + 1]);
+    pass_on(lists.ghost_sub(l), h.links(l).child_tet, *h.level(l + 1).mesh, *levels[l].free_point,
+            out[l], out[l + 1]);
 }
 
 }  // namespace mrsim

@@ -490,7 +490,8 @@ void HierarchicalSimulation::update_stable_steps() {
   }
   if (contact_) {
     near_.clear();
-    for (const std::vector<int>& c : contact_->candidates()) near_.insert(near_.end(), c.begin(), c.end());
+    for (const std::vector<int>& c : contact_->candidates())
+      near_.insert(near_.end(), c.begin(), c.end());
     std::sort(near_.begin(), near_.end());
     near_.erase(std::unique(near_.begin(), near_.end()), near_.end());
     const SkinMap& map = contact_->map();

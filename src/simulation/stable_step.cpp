@@ -29,7 +29,8 @@ std::vector<PointInertia> mesh_star_inertia(const TetMesh& mesh, const MaterialL
 // O(skin vertices × samples) distance tests, the poses computed once.
 std::vector<int> reachable_skin(const Skin& skin, const std::vector<Tool>& tools,
                                 const TimeSpec& time) {
-  const int samples = static_cast<int>(std::min(1e5, 16 * std::ceil(time.duration / time.frame_dt)));
+  const int samples =
+      static_cast<int>(std::min(1e5, 16 * std::ceil(time.duration / time.frame_dt)));
   std::vector<Vec3> path;
   std::vector<double> reach2;
   for (const Tool& tool : tools) {
@@ -56,8 +57,8 @@ std::vector<int> reachable_skin(const Skin& skin, const std::vector<Tool>& tools
 void add_tool_contact(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
                       const MaterialLaw& law, std::vector<std::vector<PointInertia>>& star) {
   if (sc.tools.empty()) return;
-  const Skin skin = sc.skin.empty() ? boundary_skin(*meshes.back())
-                                    : scenario_skin(sc, *meshes.back());
+  const Skin skin =
+      sc.skin.empty() ? boundary_skin(*meshes.back()) : scenario_skin(sc, *meshes.back());
   const std::vector<Tool> tools = scenario_tools(sc);
   const SkinPenalty penalty = skin_penalty(skin, tools, law.lambda + 2 * law.mu);
   const int l = static_cast<int>(star.size()) - 1;

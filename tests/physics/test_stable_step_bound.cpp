@@ -32,8 +32,8 @@ TetMesh jittered_box(int nx, int ny, int nz, double jitter, unsigned seed) {
   std::uniform_real_distribution<double> d(-jitter, jitter);
   const Vec3 h(0.1 / nx, 0.04 / ny, 0.03 / nz);
   for (Vec3& p : m.points)
-    if (p.x() > 1e-9 && p.x() < 0.1 - 1e-9 && p.y() > 1e-9 && p.y() < 0.04 - 1e-9 &&
-        p.z() > 1e-9 && p.z() < 0.03 - 1e-9)
+    if (p.x() > 1e-9 && p.x() < 0.1 - 1e-9 && p.y() > 1e-9 && p.y() < 0.04 - 1e-9 && p.z() > 1e-9 &&
+        p.z() < 0.03 - 1e-9)
       p += Vec3(d(rng) * h.x(), d(rng) * h.y(), d(rng) * h.z());
   return m;
 }

@@ -38,7 +38,8 @@ TEST(Divergence, MessageNamesThePlaceAndTheStepAgainstTheEstimate) {
   const DivergenceGuard guard = DivergenceGuard::for_level(sim.model(0), 1.0);
   const auto why = guard.check(sim, 0.0);
   ASSERT_TRUE(why.has_value());
-  EXPECT_NE(why->find("point " + std::to_string(coarse) + " of level 0"), std::string::npos) << *why;
+  EXPECT_NE(why->find("point " + std::to_string(coarse) + " of level 0"), std::string::npos)
+      << *why;
   EXPECT_NE(why->find("a coarse point next to the fine region"), std::string::npos) << *why;
   EXPECT_NE(why->find("against its stable step estimate"), std::string::npos) << *why;
   // 10 ms is far above this point's estimate: the message says so and what to do.

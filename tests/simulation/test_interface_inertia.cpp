@@ -59,14 +59,16 @@ void random_splits(HierarchicalSimulation& sim, unsigned seed, int rounds) {
 // active points (weight 1) — the case where the lumped mass left whole stars without mass.
 std::vector<TetMesh> nested_boxes() {
   std::vector<TetMesh> m;
-  for (int n : {2, 4, 8}) m.push_back(make_box_mesh(Vec3(0, 0, 0), Vec3(0.08, 0.08, 0.04), n, n, n / 2));
+  for (int n : {2, 4, 8})
+    m.push_back(make_box_mesh(Vec3(0, 0, 0), Vec3(0.08, 0.08, 0.04), n, n, n / 2));
   return m;
 }
 
 }  // namespace
 
 TEST(InterfaceInertia, GravityKeepsTheSharesTotalAndInertiaFollowsTheGhosts) {
-  const auto meshes = mrsim::testing::jittered_box_levels({{3, 2, 2}, {6, 4, 3}, {11, 7, 5}}, 5, 0.2);
+  const auto meshes =
+      mrsim::testing::jittered_box_levels({{3, 2, 2}, {6, 4, 3}, {11, 7, 5}}, 5, 0.2);
   HierarchySetup hs = clamped_setup(meshes, Coupling::Energy);
   hs.fixed.clear();  // no support: every share reaches an active point
   HierarchicalSimulation sim(pointers(meshes), hs);
@@ -129,7 +131,8 @@ TEST(InterfaceInertia, NestedLevelsKeepTheStableStepOfTheirLevels) {
 }
 
 TEST(InterfaceInertia, UnnestedLevelsEstimateIsNeverOptimistic) {
-  const auto meshes = mrsim::testing::jittered_box_levels({{3, 2, 2}, {6, 4, 3}, {11, 7, 5}}, 9, 0.25);
+  const auto meshes =
+      mrsim::testing::jittered_box_levels({{3, 2, 2}, {6, 4, 3}, {11, 7, 5}}, 9, 0.25);
   for (unsigned seed : {4u, 5u}) {
     HierarchicalSimulation sim(pointers(meshes), clamped_setup(meshes, Coupling::Energy));
     random_splits(sim, seed, 2);
