@@ -140,7 +140,7 @@ void HierarchicalSimulation::advance_frame(std::vector<TimeLevelChange>* changes
   std::vector<TimeLevelChange>& out = changes ? *changes : changes_scratch_;
   changes_scratch_.clear();
   begin_contact_frame(frame_dt_);
-  if (contact_) time_levels_->refile();  // the contact near the tools changed the stable steps
+  if (contact_) time_levels_->restable();  // the contact near the tools changes stable steps
   run_w_cycle(out);
   ++frames_;
   time_ = static_cast<double>(frames_) * frame_dt_;

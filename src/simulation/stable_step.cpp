@@ -10,19 +10,13 @@
 #include "contact/tool_shape.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
-#include "physics/lumped_mass.hpp"
+#include "physics/level_model.hpp"
 #include "simulation/contact_setup.hpp"
 #include "simulation/level_setup_from_scenario.hpp"
 
 namespace mrsim {
 
 namespace {
-
-std::vector<PointInertia> mesh_star_inertia(const TetMesh& mesh, const MaterialLaw& law) {
-  const TetGeometry geo = build_tet_geometry(mesh);
-  const PointAdjacency adj = build_point_adjacency(static_cast<int>(mesh.points.size()), mesh.tets);
-  return star_inertia(adj, tet_energy_bounds(geo, law), lumped_masses(geo, adj, law.density));
-}
 
 // The skin vertices a tool may reach during the run: within twice its bounding radius of its
 // path (sampled 16 times per display frame; the skin moves away from a tool that presses it).
@@ -72,16 +66,6 @@ void add_tool_contact(const Scenario& sc, const std::vector<const TetMesh*>& mes
       star);
 }
 
-double edge_at(const TetMesh& mesh, int p) {
-  double h2 = std::numeric_limits<double>::infinity();
-  for (const Tet& t : mesh.tets)
-    for (int a = 0; a < 4; ++a)
-      if (t[a] == p)
-        for (int b = 0; b < 4; ++b)
-          if (b != a) h2 = std::min(h2, (mesh.points[t[a]] - mesh.points[t[b]]).squaredNorm());
-  return std::sqrt(h2);
-}
-
 // What sets the estimate at a point: the term whose removal would lengthen it most.
 std::string cause_at(const PointInertia& with_contact, const PointInertia& own, bool semi,
                      double edge) {
@@ -120,9 +104,12 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
   if (sc.space.enabled)
     last = sc.space.max_level >= 0 ? std::min<int>(sc.space.max_level, meshes.size() - 1)
                                    : static_cast<int>(meshes.size()) - 1;
+  std::vector<LevelModel> models;
   std::vector<std::vector<PointInertia>> star;
-  for (int l = 0; l <= last; ++l) star.push_back(mesh_star_inertia(*meshes[l], law));
-  const std::vector<std::vector<PointInertia>> own = star;
+  for (int l = 0; l <= last; ++l) {
+    models.push_back(build_level_model(*meshes[l], law));
+    star.push_back(models.back().star);
+  }
   add_tool_contact(sc, {meshes.begin(), meshes.begin() + last + 1}, law, star);
   StableStep best{std::numeric_limits<double>::infinity(), 0, 0, ""};
   for (int l = 0; l <= last; ++l)
@@ -131,8 +118,8 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
       if (dt < best.dt) best = {dt, l, p, ""};
     }
   if (std::isfinite(best.dt))
-    best.cause = cause_at(star[best.level][best.point], own[best.level][best.point], semi,
-                          edge_at(*meshes[best.level], best.point));
+    best.cause = cause_at(star[best.level][best.point], models[best.level].star[best.point], semi,
+                          models[best.level].min_edge[best.point]);
   return best;
 }
 

@@ -17,7 +17,7 @@ TimeAdaptivity::TimeAdaptivity(const Hierarchy& h, const StatusLists& lists,
   const int L = num_levels(), levels = rules.max_level + 1;
   for (int l = 0; l < L; ++l) {
     time_level_.emplace_back(models_[l]->num_points(), std::int8_t{-1});
-    courant_.emplace_back(models_[l]->num_points(), std::int8_t{0});
+    stable_level_.emplace_back(models_[l]->num_points(), std::int8_t{0});
     delta_max_.emplace_back(models_[l]->num_points(), -1.0f);
     reach_.emplace_back(models_[l]->num_points(), std::uint8_t{0});
   }
@@ -40,15 +40,29 @@ void TimeAdaptivity::refile() {
     for (auto& per_k : lists_)
       for (int p : per_k[l])
         if (h_.state(l, p) != NodeState::Active) time_level_[l][p] = -1;
-    // The stable step of every particle follows the topology (interface mass and stiffness,
-    // contact): a particle whose level became too coarse for it moves finer at once.
+  }
+  follow_stable_steps();
+  rebuild_lists();
+}
+
+// The stable step of every particle follows the topology (interface mass and stiffness) and
+// the contact near the tools: a particle whose level became too coarse for it moves finer at
+// once. True when one moved.
+bool TimeAdaptivity::follow_stable_steps() {
+  bool moved = false;
+  for (int l = 0; l < num_levels(); ++l)
     for (int p : status_.active(l)) {
       if (!states_[l].free_point[p]) continue;
-      courant_[l][p] = static_cast<std::int8_t>(stable_time_level(rules_, stable_dt_[l][p]));
-      if (time_level_[l][p] < courant_[l][p]) time_level_[l][p] = courant_[l][p];
+      stable_level_[l][p] = static_cast<std::int8_t>(stable_time_level(rules_, stable_dt_[l][p]));
+      if (time_level_[l][p] >= stable_level_[l][p]) continue;
+      time_level_[l][p] = stable_level_[l][p];
+      moved = true;
     }
-  }
-  rebuild_lists();
+  return moved;
+}
+
+void TimeAdaptivity::restable() {
+  if (follow_stable_steps()) rebuild_lists();
 }
 
 void TimeAdaptivity::rebuild_lists() {
@@ -209,7 +223,7 @@ void TimeAdaptivity::end_frame(std::vector<TimeLevelChange>& changes) {
       const int k = time_level_[l][p];
       if (k < 0) continue;
       const float d = delta_max_[l][p];
-      if (k > courant_[l][p] && d >= 0 && d < calm) {
+      if (k > stable_level_[l][p] && d >= 0 && d < calm) {
         time_level_[l][p] = static_cast<std::int8_t>(k - 1);
         changes.push_back({l, p, k, k - 1});
       }

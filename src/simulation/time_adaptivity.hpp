@@ -41,6 +41,10 @@ class TimeAdaptivity {
   /// simulation); points that became active start there, points on a coarser level move to it,
   /// points that left lose theirs. Only at a frame boundary.
   void refile();
+  /// At a frame start, after the stable steps changed without a topology change (the contact
+  /// near the tools): particles whose level became too coarse move finer; the lists are
+  /// rebuilt only then. O(active).
+  void restable();
 
   /// One sub-step of the frame: its tick and the time levels it kicks (-1: none).
   struct SubStep {
@@ -81,6 +85,7 @@ class TimeAdaptivity {
   void mark_needed_ghosts(int k);
   void bring_in_pending(int tick);
   bool populated(int k) const;
+  bool follow_stable_steps();
   void use_subsets(int kc);
 
   const Hierarchy& h_;
@@ -93,7 +98,7 @@ class TimeAdaptivity {
   WCycle wc_;
   int K_ = 0;     // the finest time level (rules.max_level)
   int tick_ = 0;  // the next tick of the frame
-  std::vector<std::vector<std::int8_t>> time_level_, courant_;  // [space level][point]
+  std::vector<std::vector<std::int8_t>> time_level_, stable_level_;  // [space level][point]
   std::vector<std::vector<float>> delta_max_;                    // δ max over the frame
   std::vector<std::vector<std::vector<int>>> lists_;             // [k][l]
   struct Pending {
