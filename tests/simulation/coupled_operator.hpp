@@ -6,9 +6,23 @@
 #include <utility>
 #include <vector>
 
+#include "hierarchy/hierarchy_fixture.hpp"
 #include "simulation/hierarchical_simulation.hpp"
 
 namespace mrsim::testing {
+
+/// A linear (Cauchy) hierarchy with Lamé λ, μ, clamped on the rest points where `fixed(X)`.
+template <class Pred>
+HierarchySetup clamped_setup(const std::vector<TetMesh>& meshes, Coupling coupling, double lambda,
+                             double mu, Pred fixed) {
+  HierarchySetup hs;
+  hs.law.strain = StrainMeasure::Cauchy;
+  hs.law.lambda = lambda;
+  hs.law.mu = mu;
+  hs.coupling = coupling;
+  hs.fixed = fixed_where(meshes, fixed);
+  return hs;
+}
 
 inline Eigen::MatrixXd coupled_stiffness(HierarchicalSimulation& sim,
                                          std::vector<std::pair<int, int>>& dofs) {

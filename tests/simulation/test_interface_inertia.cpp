@@ -15,14 +15,10 @@ using namespace mrsim;
 
 namespace {
 
+// Soft tissue (λ = 5·10⁴, μ = 10⁴ Pa), clamped at its base z = 0.
 HierarchySetup clamped_setup(const std::vector<TetMesh>& meshes, Coupling coupling) {
-  HierarchySetup hs;
-  hs.law.strain = StrainMeasure::Cauchy;
-  hs.law.lambda = 5e4;
-  hs.law.mu = 1e4;
-  hs.coupling = coupling;
-  hs.fixed = mrsim::testing::fixed_where(meshes, [](const Vec3& X) { return X.z() < 1e-9; });
-  return hs;
+  return mrsim::testing::clamped_setup(meshes, coupling, 5e4, 1e4,
+                                       [](const Vec3& X) { return X.z() < 1e-9; });
 }
 
 std::vector<const TetMesh*> pointers(const std::vector<TetMesh>& meshes) {

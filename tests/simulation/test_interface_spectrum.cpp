@@ -20,14 +20,10 @@ using namespace mrsim;
 
 namespace {
 
+// The validation beam's material (E = 1 MPa, ν = 0.3), clamped at x = 0.
 HierarchySetup clamped_beam_setup(const std::vector<TetMesh>& meshes, Coupling coupling) {
-  HierarchySetup hs;
-  hs.law.strain = StrainMeasure::Cauchy;
-  hs.law.lambda = 576923;
-  hs.law.mu = 384615;
-  hs.coupling = coupling;
-  hs.fixed = mrsim::testing::fixed_where(meshes, [](const Vec3& X) { return X.x() < 1e-9; });
-  return hs;
+  return mrsim::testing::clamped_setup(meshes, coupling, 576923, 384615,
+                                       [](const Vec3& X) { return X.x() < 1e-9; });
 }
 
 double max_growth_rate(HierarchicalSimulation& sim, double* asymmetry = nullptr) {
