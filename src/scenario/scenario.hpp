@@ -97,6 +97,7 @@ struct SpaceAdaptivitySpec {
   int max_level = -1;                 // -1: the last level
   std::int64_t max_active_points = 0;  // 0: no cap
   int min_dwell_frames = 5;
+  bool contact_refine = true;  // refine ahead of the tools (look-ahead), not only on c
   Coupling coupling = Coupling::Energy;
 };
 

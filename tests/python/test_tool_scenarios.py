@@ -142,6 +142,41 @@ def test_time_levels_rate(binary, source, tmp):
           % (len(t), summary["steps"], gap * 1e3, f[:, 2].max()))
 
 
+def first_split_and_contact(log):
+    """(time of the first frame with a level above 0 active, time of the first contact)."""
+    with h5py.File(log, "r") as h5:
+        t, contacts = h5["/tool/time"][:], h5["/tool/contacts"][:]
+        frame_time, active = h5["/frames/time"][:], h5["/frames/active"][:]
+        push = np.argmax(h5["/frames/tool_force"][:, 0, 2])
+    refined = active[:, 1:].sum(axis=1) > 0
+    return frame_time[np.argmax(refined)], t[np.argmax(contacts > 0)], active, push
+
+
+def test_criterion_refines_under_tool(binary, source, tmp):
+    """Issue 16 point 2: with adaptivity.space.contact_refine false only the Laplacian criterion
+    decides (the thesis' Fig. 5.9): nothing splits before the probe touches, the finest level
+    takes over under it, and the liver is back on level 0 after it leaves. With the look-ahead
+    (the default, test_liver_probe) the splits come before the contact."""
+    probe = os.path.join(source, "scenarios", "liver_probe.yaml")
+    runs = {}
+    for refine in ("true", "false"):
+        out = os.path.join(tmp, "probe_contact_refine_" + refine)
+        r = cli.run(binary, "run", probe, "-o", out, "-q", "--set", "output.vtk=false",
+                    "--set", "adaptivity.space.contact_refine=" + refine)
+        check(r.returncode == 0, "liver_probe with contact_refine=%s runs (exit %d) %s"
+              % (refine, r.returncode, r.stderr[-300:]))
+        runs[refine] = first_split_and_contact(os.path.join(out, "log.h5"))
+    split_on, contact_on, _, _ = runs["true"]
+    split, contact, active, push = runs["false"]
+    check(split_on < contact_on,
+          "look-ahead on: first split at t = %.2f s, before the first contact at %.3f s"
+          % (split_on, contact_on))
+    check(split >= contact and active[push, -1] > 0 and np.array_equal(active[-1], active[0]),
+          "criterion alone: first split at t = %.2f s, after the first contact at %.3f s; %d "
+          "finest points at the strongest push; level 0 alone again at the end"
+          % (split, contact, active[push, -1]))
+
+
 def write_scenario(path, base, replace):
     text = open(base).read()
     meshes = os.path.join(os.path.dirname(os.path.abspath(base)), "meshes") + "/"
@@ -382,6 +417,7 @@ def main():
         test_shared_points_warning(args.binary, tmp)
         test_liver_probe(args.binary, args.source, tmp)
         test_time_levels_rate(args.binary, args.source, tmp)
+        test_criterion_refines_under_tool(args.binary, args.source, tmp)
         probe = os.path.join(args.source, "scenarios", "liver_probe.yaml")
         cli.test_threads_bit_identical(args.binary, probe, tmp, 0.3, (5, 15))
         cli.test_threads_bit_identical(
