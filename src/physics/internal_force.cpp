@@ -14,8 +14,7 @@ void cauchy_gather(const LevelModel& m, IndexSet points, const Vec3* u, const Ve
   const bool damped = !m.D.empty();
   const int* start = m.adj.nbr_start.data();
   const int* nbr = m.adj.nbr.data();
-#pragma omp parallel for schedule(static) if (n >= parallel_threshold())
-  for (int k = 0; k < n; ++k) {
+  parallel_for(n, [&](int k) {
     const int i = points[k];
     Vec3 fi = Vec3::Zero();
     const Vec3 ui = u[i];
@@ -25,7 +24,7 @@ void cauchy_gather(const LevelModel& m, IndexSet points, const Vec3* u, const Ve
       for (int e = start[i]; e < start[i + 1]; ++e) fi.noalias() -= m.D[e] * (v[nbr[e]] - vi);
     }
     f[i] = fi;
-  }
+  });
 }
 
 // Per-tet nodal forces -V P ∇N_a (P = σ + ν for Cauchy); the sum over a is zero up to rounding.
@@ -54,23 +53,29 @@ void tet_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets, co
   const int n = points.count;
   ws.reserve_for(m, true);
   TetGradients* tf = ws.tet_force.data();
-#pragma omp parallel if (n >= parallel_threshold())
+  const auto gather = [&](int k) {
+    const int i = points[k];
+    Vec3 fi = Vec3::Zero();
+    for (int s = m.adj.inc_start[i]; s < m.adj.inc_start[i + 1]; ++s) {
+      const int t = m.adj.inc_tet[s];
+      if (!weight)
+        fi += tf[t][m.adj.inc_local[s]];
+      else if (weight[t] != 0)
+        fi += weight[t] * tf[t][m.adj.inc_local[s]];
+    }
+    f[i] = fi;
+  };
+  if (!use_threads(n)) {  // no serialized region (core/parallel.hpp)
+    for (int k = 0; k < nt; ++k) tet_nodal_forces(m, tets[k], u, v, tf[tets[k]]);
+    for (int k = 0; k < n; ++k) gather(k);
+    return;
+  }
+#pragma omp parallel
   {
 #pragma omp for schedule(static)
     for (int k = 0; k < nt; ++k) tet_nodal_forces(m, tets[k], u, v, tf[tets[k]]);
 #pragma omp for schedule(static)
-    for (int k = 0; k < n; ++k) {
-      const int i = points[k];
-      Vec3 fi = Vec3::Zero();
-      for (int s = m.adj.inc_start[i]; s < m.adj.inc_start[i + 1]; ++s) {
-        const int t = m.adj.inc_tet[s];
-        if (!weight)
-          fi += tf[t][m.adj.inc_local[s]];
-        else if (weight[t] != 0)
-          fi += weight[t] * tf[t][m.adj.inc_local[s]];
-      }
-      f[i] = fi;
-    }
+    for (int k = 0; k < n; ++k) gather(k);
   }
 }
 

@@ -24,8 +24,9 @@ Vec3 corrected_laplacian(const LevelModel& m, int i, const Vec3* u) {
 void laplacian_criterion(const LevelModel& m, const Vec3* u, std::vector<double>& criterion) {
   const int n = m.num_points();
   criterion.resize(n);
-#pragma omp parallel for schedule(static) if (n >= parallel_threshold())
-  for (int i = 0; i < n; ++i) criterion[i] = m.mean_edge[i] * corrected_laplacian(m, i, u).norm();
+  parallel_for(n, [&](int i) {
+    criterion[i] = m.mean_edge[i] * corrected_laplacian(m, i, u).norm();
+  });
 }
 
 }  // namespace mrsim

@@ -99,12 +99,13 @@ std::int64_t LevelForceField::evaluate(const Vec3* u, const Vec3* v, Vec3* f) {
   else
     internal_forces(model_, pts, tets, u, v, f, ws_);
   const int n = pts.count;
-#pragma omp parallel for schedule(static) if (n >= parallel_threshold())
-  for (int k = 0; k < n; ++k) f[pts[k]] += weight_[pts[k]];
-  if (external_) {
-#pragma omp parallel for schedule(static) if (n >= parallel_threshold())
-    for (int k = 0; k < n; ++k) f[pts[k]] += external_[pts[k]];
-  }
+  if (external_)
+    parallel_for(n, [&](int k) {
+      f[pts[k]] += weight_[pts[k]];
+      f[pts[k]] += external_[pts[k]];  // in this order, as when these were two loops
+    });
+  else
+    parallel_for(n, [&](int k) { f[pts[k]] += weight_[pts[k]]; });
   return n;
 }
 

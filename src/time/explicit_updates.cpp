@@ -7,27 +7,21 @@ namespace mrsim {
 void kick(PointState& s, IndexSet points, double dt) { kick(s, s.f.data(), points, dt); }
 
 void kick(PointState& s, const Vec3* force, IndexSet points, double dt) {
-  const int n = points.count;
-#pragma omp parallel for schedule(static) if (n >= parallel_threshold())
-  for (int k = 0; k < n; ++k) {
+  parallel_for(points.count, [&](int k) {
     const int i = points[k];
     if (s.free_point[i]) s.v[i] += (dt * s.inv_mass[i]) * force[i];
-  }
+  });
 }
 
 void save_forces(const PointState& s, IndexSet points, Vec3* saved) {
-  const int n = points.count;
-#pragma omp parallel for schedule(static) if (n >= parallel_threshold())
-  for (int k = 0; k < n; ++k) saved[points[k]] = s.f[points[k]];
+  parallel_for(points.count, [&](int k) { saved[points[k]] = s.f[points[k]]; });
 }
 
 void drift(PointState& s, IndexSet points, double dt) {
-  const int n = points.count;
-#pragma omp parallel for schedule(static) if (n >= parallel_threshold())
-  for (int k = 0; k < n; ++k) {
+  parallel_for(points.count, [&](int k) {
     const int i = points[k];
     if (s.free_point[i]) s.u[i] += dt * s.v[i];
-  }
+  });
 }
 
 }  // namespace mrsim

@@ -33,14 +33,12 @@ SemiImplicitFilter::SemiImplicitFilter(const LevelModel& model)
     : jacobian_(point_jacobians(model)) {}
 
 void SemiImplicitFilter::apply(PointState& s, IndexSet points, double dt) const {
-  const int n = points.count;
-#pragma omp parallel for schedule(static) if (n >= parallel_threshold())
-  for (int k = 0; k < n; ++k) {
+  parallel_for(points.count, [&](int k) {
     const int i = points[k];
-    if (!s.free_point[i]) continue;
+    if (!s.free_point[i]) return;
     const Mat3 W = (Mat3::Identity() - (dt * dt * s.inv_mass[i]) * jacobian_[i]).inverse();
     s.v[i] = W * s.v[i];
-  }
+  });
 }
 
 }  // namespace mrsim
