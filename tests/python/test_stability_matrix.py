@@ -38,6 +38,15 @@ def main():
               what + ": true limit / estimate %.2f in [%g, %s]" % (row["ratio"], lo, hi))
         if row["integrator"] == "modified_euler" and not row["time_levels"]:
             check(row["ratio"] <= 2.5, what + ": one global explicit step, within 2.5")
+    # Issue 16 point 4: in the adaptive hierarchy the semi-implicit step stays at least twice
+    # the explicit one (the interface mass keeps the filter's margin).
+    limit = {(r["case"], r["integrator"]): r["limit_substeps"] for r in rows
+             if not r["time_levels"]}
+    explicit = limit.get(("beam_adaptive", "modified_euler"))
+    semi = limit.get(("beam_adaptive", "semi_implicit"))
+    check(explicit is not None and semi is not None and 2 * semi <= explicit,
+          "beam_adaptive: semi_implicit runs at %s substeps, modified_euler needs %s (>= 2x)"
+          % (semi, explicit))
     return report()
 
 
