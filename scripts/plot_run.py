@@ -6,8 +6,10 @@
 
 Writes points_per_level.png (active and ghost points per level), time_levels.png (integrated
 particles per time level), tool_force.png (|F| and F_z of every tool at every simulation step;
-only when the scenario has tools), energies.png (kinetic and elastic energy) and events.png
-(splits and merges per frame). A killed run is plotted up to its last complete frame: the
+only when the scenario has tools), energies.png (kinetic and elastic energy), events.png
+(splits and merges per frame) and time_shares.png (each frame's wall time per task, stacked,
+with the run's shares in the legend: internal forces, ghosts, contact, integration,
+adaptivity, output, other; only when the log has /frames/wall_time_parts). A killed run is plotted up to its last complete frame: the
 length of /frames/frame counts the complete frames and extra rows are ignored. A run still
 going can be plotted too (the file is opened without HDF5 file locking).
 
@@ -126,6 +128,19 @@ def read_events(log, frames):
     return {"frame": frame[keep], "kind": np.asarray(kind, dtype=object)[keep]}
 
 
+def read_parts(log, rows):
+    """/frames/wall_time_parts and its column names; (None, []) in logs written before it."""
+    if "frames/wall_time_parts" not in log:
+        return None, []
+    parts = dataset(log, "frames/wall_time_parts", rows)
+    names = [n.decode() if isinstance(n, bytes) else str(n)
+             for n in log["frames/wall_time_parts"].attrs.get("names", [])]
+    if parts.ndim != 2 or len(names) != parts.shape[1]:
+        raise LogError("cannot read %s: dataset frames/wall_time_parts has %s columns and %d "
+                       "names" % (log.filename, parts.shape[1:], len(names)))
+    return parts, names
+
+
 def read_run(path):
     """Everything the plots need, cut to the complete frames (docs/output.md, Guarantees)."""
     with open_log(path) as log:
@@ -142,6 +157,7 @@ def read_run(path):
                     raise LogError("cannot read %s: dataset frames/%s has %d rows, "
                                    "frames/frame %d" % (path, key, len(run[key]), n))
             run["time_level_step"] = dataset(log, "frames/time_level_step")
+            run["wall_time_parts"], run["task_names"] = read_parts(log, n)
             resolved = scenario(log)
             run["frame_dt"] = frame_dt(resolved, run["time_level_step"])
             run["tools"] = [read_tool(log, g, run["time"][-1]) for g in tool_groups(log)]
@@ -317,11 +333,37 @@ def plot_events(run):
     return fig
 
 
+def plot_time_shares(run):
+    """Each frame's wall time per task, stacked (ms), as the thesis reports its time shares
+    (§5: model 60 %, surface 5 %, collision 20 %, display 15 %); the legend gives each task's
+    share of the whole run. Frame 0 (set-up output only) is left out."""
+    parts = run["wall_time_parts"]
+    if parts is None or len(parts) < 2:
+        return None
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    total = parts[1:].sum()
+    shares = parts[1:].sum(axis=0) / total if total > 0 else np.zeros(parts.shape[1])
+    cmap = plt.get_cmap("tab10")
+    labels = ["%s %.1f %%" % (name.replace("_", " "), 100 * share)
+              for name, share in zip(run["task_names"], shares)]
+    ax.stackplot(run["time"][1:], *(1e3 * parts[1:, k] for k in range(parts.shape[1])),
+                 labels=labels, colors=[cmap(k) for k in range(parts.shape[1])], alpha=0.85)
+    ax.set_xlabel("simulated time (s)")
+    ax.set_ylabel("wall time per frame (ms)")
+    ax.set_title("%s: wall time per task (stacked), %.3g s over %d frames"
+                 % (run["name"], total, len(parts) - 1))
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=8, title="share of the run")
+    fig.tight_layout()
+    return fig
+
+
 PLOTS = (("points_per_level.png", plot_points_per_level),
          ("time_levels.png", plot_time_levels),
          ("tool_force.png", plot_tool_force),
          ("energies.png", plot_energies),
-         ("events.png", plot_events))
+         ("events.png", plot_events),
+         ("time_shares.png", plot_time_shares))
 
 
 def write_plots(run, out_dir):
@@ -343,7 +385,7 @@ def main(argv=None):
     parser = argparse.ArgumentParser(
         description=__doc__.split("\n")[0],
         epilog="Files: points_per_level.png, time_levels.png, tool_force.png (with tools), "
-               "energies.png, events.png.")
+               "energies.png, events.png, time_shares.png.")
     parser.add_argument("run", metavar="RUN_DIR", help="output folder of `mrsim run` "
                         "(or its log.h5)")
     parser.add_argument("-o", "--out", metavar="OUT_DIR",

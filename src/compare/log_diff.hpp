@@ -11,9 +11,10 @@
 
 namespace mrsim {
 
-/// The wall-clock time per frame, when the run started, and which build ran it.
-inline constexpr std::array<std::string_view, 4> kIgnoredLogItems = {
-    "/frames/wall_time", "/@start_time", "/@mrsim_version", "/@git_revision"};
+/// The wall-clock time per frame (and per task), when the run started, and which build ran it.
+inline constexpr std::array<std::string_view, 5> kIgnoredLogItems = {
+    "/frames/wall_time", "/frames/wall_time_parts", "/@start_time", "/@mrsim_version",
+    "/@git_revision"};
 
 /// Adds to `report` (Section::Log). Throws InputError naming the file when either log cannot
 /// be read.

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/task_clock.hpp"
 #include "core/vec.hpp"
 #include "mesh/tet_mesh.hpp"
 
@@ -60,6 +61,7 @@ struct FrameRecord {
   double kinetic_energy = 0;       // J
   double elastic_energy = 0;       // J
   double wall_time = 0;            // s, wall clock spent simulating this frame (0 at frame 0)
+  TaskClock::Parts wall_time_parts{};  // s, the frame's wall time per task (core/task_clock.hpp)
   double stable_step = 0;          // s, the smallest stable step estimate in force at its end
   double step = 0;                 // s, the finest step the frame took
   Vec3 support_reaction = Vec3::Zero();  // N, force the fixed points exert on the body

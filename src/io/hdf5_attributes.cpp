@@ -39,4 +39,20 @@ void set_int64_attribute(hid_t object, const char* name, std::int64_t value, Whe
   check(attribute.close(), where, std::string("close attribute ") + name);
 }
 
+void set_string_list_attribute(hid_t object, const char* name,
+                               std::span<const char* const> values, Where where) {
+  Handle type = utf8_string_type(where);
+  const htri_t exists = H5Aexists(object, name);
+  check(exists, where, std::string("look up attribute ") + name);
+  if (exists > 0) check(H5Adelete(object, name), where, std::string("replace attribute ") + name);
+  const hsize_t n = values.size();
+  Handle space = checked(H5Screate_simple(1, &n, nullptr), H5Sclose, where, "create dataspace");
+  Handle attribute =
+      checked(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+              H5Aclose, where, std::string("create attribute ") + name);
+  check(H5Awrite(attribute.get(), type.get(), values.data()), where,
+        std::string("write attribute ") + name);
+  check(attribute.close(), where, std::string("close attribute ") + name);
+}
+
 }  // namespace mrsim::h5

@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "io/hdf5_attributes.hpp"
 #include "io/hdf5_group.hpp"
 #include "io/hdf5_static_dataset.hpp"
 
@@ -88,6 +89,15 @@ FrameTable::FrameTable(hid_t file_id, std::size_t levels,
   wall_time_ = {g, "/frames",
                 scalar_spec<double>("wall_time", "s", "wall clock spent simulating this frame"),
                 file_};
+  ExtendibleSpec parts = scalar_spec<double>(
+      "wall_time_parts", "s",
+      "wall clock of the frame per task (column names in attribute `names`; they sum to the "
+      "frame's whole wall time, output included; docs/output.md)");
+  parts.row_shape = {kTaskCount};
+  parts.chunk_rows = chunk_rows_for(kTaskCount * sizeof(double), kScalarChunkRows);
+  wall_time_parts_ = {g, "/frames", parts, file_};
+  set_string_list_attribute(wall_time_parts_.id(), "names", kTaskNames,
+                            {file_, "/frames/wall_time_parts"});
   stable_step_ = {g, "/frames",
                   scalar_spec<double>("stable_step", "s",
                                       "smallest stable step estimate of the active points at the "
@@ -118,6 +128,7 @@ void FrameTable::append(const FrameRecord& record) {
   append_one(kinetic_energy_, record.kinetic_energy);
   append_one(elastic_energy_, record.elastic_energy);
   append_one(wall_time_, record.wall_time);
+  wall_time_parts_.append(std::span<const double>(record.wall_time_parts));
   append_one(stable_step_, record.stable_step);
   append_one(step_, record.step);
   active_.append(std::span<const std::int64_t>(record.active));
@@ -132,6 +143,7 @@ void FrameTable::append(const FrameRecord& record) {
 
 void FrameTable::close() {
   for (ExtendibleDataset* d : {&time_, &kinetic_energy_, &elastic_energy_, &wall_time_,
+                               &wall_time_parts_,
                                &stable_step_, &step_, &active_,
                                &ghosts_, &force_evaluations_, &support_reaction_, &time_levels_,
                                &time_level_evaluations_, &frame_}) {

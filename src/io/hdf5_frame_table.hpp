@@ -30,6 +30,7 @@ class FrameTable {
   std::string file_;
   Handle group_;
   ExtendibleDataset time_, kinetic_energy_, elastic_energy_, wall_time_, stable_step_, step_;
+  ExtendibleDataset wall_time_parts_;
   ExtendibleDataset active_, ghosts_, force_evaluations_, support_reaction_;
   ExtendibleDataset time_levels_, time_level_evaluations_;
   std::size_t time_levels_count_ = 0;

@@ -49,6 +49,7 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
         s.v[i] = setup.initial_velocity +
                  setup.initial_angular_velocity.cross(meshes[l]->points[i] - c);
     forces_.push_back(std::make_unique<LevelForceField>(*models_[l], setup.gravity));
+    forces_[l]->set_clock(&tasks_);
     if (transfer_)
       forces_[l]->couple(hierarchy_.get(), lists_.get(), l);
     else
@@ -246,7 +247,10 @@ void HierarchicalSimulation::run_steps(int steps) {
 // (the first step must see every vertex that already touches a tool).
 void HierarchicalSimulation::begin_contact_frame(double duration) {
   if (!contact_) return;
-  contact_->begin_frame(time_, time_ + duration, fields_);
+  {
+    const TaskTimer timer(&tasks_, Task::Contact);
+    contact_->begin_frame(time_, time_ + duration, fields_);
+  }
   update_external(time_);
   update_stable_steps();
 }
@@ -338,6 +342,7 @@ void HierarchicalSimulation::resolve_loads() {
 // O(loaded points + contact candidates) per step: clear the previous shares of the loads and
 // the contacts (they may share points), then add each load at its factor and the contacts.
 void HierarchicalSimulation::update_external(double t) {
+  const TaskTimer timer(&tasks_, Task::Contact);
   loads_on_support_.setZero();
   for (size_t k = 0; k < loads_.size(); ++k) load_factors_[k] = load_factor(loads_[k].profile, t);
   for (const LoadTarget& target : load_targets_)
@@ -359,6 +364,7 @@ void HierarchicalSimulation::update_external(double t) {
 // map is zero, so it never carries a stale interpolated value into a split (a prestress) and
 // its force goes to the support, not to its sources.
 void HierarchicalSimulation::refresh_ghosts() {
+  const TaskTimer timer(&tasks_, Task::Ghosts);
   update_ghosts(*hierarchy_, *lists_, fields_);
   for (int l = 0; l < num_levels(); ++l)
     for (int p : fixed_ghosts_[l]) {
@@ -368,6 +374,7 @@ void HierarchicalSimulation::refresh_ghosts() {
 }
 
 void HierarchicalSimulation::transfer_forces() {
+  const TaskTimer timer(&tasks_, Task::Ghosts);
   ghosts_on_support_.setZero();
   for (int l = 0; l < num_levels(); ++l)
     for (int p : fixed_ghosts_[l]) {

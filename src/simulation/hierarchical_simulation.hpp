@@ -125,6 +125,9 @@ class HierarchicalSimulation {
   /// The tools and the skin, nullptr without tools. Samples accumulate over the frames until
   /// the caller clears them.
   const SkinContact* contact() const { return contact_.get(); }
+  /// Wall time of internal forces, ghosts and contact so far (core/task_clock.hpp); the run
+  /// adds the other tasks.
+  TaskClock& task_clock() { return tasks_; }
   SkinContact* contact() { return contact_.get(); }
   /// The active points that move a skin vertex some tool may reach during the next
   /// `lookahead` seconds, as (level, point), sorted, unique: where contact is coming.
@@ -196,6 +199,7 @@ class HierarchicalSimulation {
   Coupling coupling_ = Coupling::Energy;
   bool transfer_ = false;  // energy coupling with more than one level
   bool semi_implicit_ = false;
+  TaskClock tasks_;
   std::vector<std::vector<PointInertia>> inertia_;  // [level][point], active points
   std::vector<std::vector<PointInertia>> loaded_;   // the same with the tools' contact
   std::vector<int> near_;                           // skin vertices near a tool (scratch)

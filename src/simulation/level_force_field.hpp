@@ -4,6 +4,7 @@
 // Coupled to a hierarchy (energy-consistent coupling, docs/hierarchy.md), it also gathers the
 // force on the level's ghosts, each tet weighted by its active share, for the transfer to the
 // ghosts' sources (hierarchy/ghost_force_transfer.hpp): O(active + ghosts + live tets).
+#include "core/task_clock.hpp"
 #include "hierarchy/status_lists.hpp"
 #include "physics/internal_force.hpp"
 #include "time/force_field.hpp"
@@ -37,6 +38,8 @@ class LevelForceField final : public ForceField {
   /// hierarchy/interface_inertia.hpp (the lumped mass by default).
   void weigh(const std::vector<int>& points, const std::vector<PointInertia>& inertia);
   std::int64_t evaluate(const Vec3* u, const Vec3* v, Vec3* f) override;
+  /// Evaluations count their wall time as Task::InternalForces here (nullptr: not timed).
+  void set_clock(TaskClock* clock) { clock_ = clock; }
 
   /// Fills `out` for these integrated points (a subset of the served ones) and the ghosts of
   /// this level whose force reaches them (sorted). O(their incident tets).
@@ -71,6 +74,7 @@ class LevelForceField final : public ForceField {
   std::vector<int> gathered_;             // active ∪ ghosts, sorted
   std::vector<double> share_;             // per tet, 0 outside tets_
   const FieldSubset* subset_ = nullptr;
+  TaskClock* clock_ = nullptr;
 };
 
 }  // namespace mrsim

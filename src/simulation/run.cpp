@@ -5,6 +5,7 @@
 #include <ctime>
 #include <fstream>
 #include <memory>
+#include <numeric>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -17,6 +18,7 @@
 #include "contact/tool_surface.hpp"
 #include "simulation/contact_setup.hpp"
 #include "simulation/divergence.hpp"
+#include "simulation/frame_timing.hpp"
 #include "simulation/hierarchy_diagnostics.hpp"
 #include "simulation/level_setup_from_scenario.hpp"
 #include "simulation/stable_step.hpp"
@@ -104,7 +106,12 @@ class FrameWriter {
     if (sc.output.vtk) vtk_ = std::make_unique<VtkSeriesWriter>(sc.output.dir);
   }
 
-  void write(int frame, double time, double frame_wall, const Energies& e) {
+  /// The frame's row of log.h5 and, when due, its VTK files. `timing` started with the frame:
+  /// the output is timed here and the row gets the frame's wall time per task. The row is
+  /// appended after the frame's files.
+  void write(int frame, double time, double frame_wall, const Energies& e, FrameTiming& timing) {
+    const auto start = Clock::now();
+    const double counted = timing.counted();
     FrameRecord rec;
     rec.frame = frame;
     rec.time = time;
@@ -135,9 +142,15 @@ class FrameWriter {
       rec.time_level_evaluations = {evaluations};
     }
     write_tool_samples(rec);
-    log_->append_frame(rec);
     if (vtk_ && frame % sc_.output.every == 0) write_vtk(frame, time);
+    timing.add_phase(Task::Output, start, counted);
+    rec.wall_time_parts = timing.finish();
+    for (std::size_t k = 0; k < kTaskCount; ++k) run_parts_[k] += rec.wall_time_parts[k];
+    log_->append_frame(rec);
   }
+
+  /// Σ over the frames written so far of their wall time per task (s).
+  const TaskClock::Parts& run_parts() const { return run_parts_; }
 
   /// Largest force on any tool at any step so far (N).
   double peak_tool_force() const { return peak_tool_force_; }
@@ -230,6 +243,7 @@ class FrameWriter {
   std::vector<std::vector<std::int32_t>> time_level_;
   std::unique_ptr<Hdf5Log> log_;
   std::unique_ptr<VtkSeriesWriter> vtk_;
+  TaskClock::Parts run_parts_{};
   std::vector<TriangleSurface> tool_surfaces_;  // per tool, in the tool frame
   std::vector<std::vector<Vec3>> tool_points_;  // per tool, posed (scratch)
   std::vector<Vec3> skin_u_, skin_v_;
@@ -275,7 +289,8 @@ BudgetRule budget_rule(const Scenario& sc, double last_simulation_wall) {
 }
 
 nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& sim,
-                            const RunState& st, const RunSummary& sum, double peak_tool_force) {
+                            const RunState& st, const RunSummary& sum, double peak_tool_force,
+                            const TaskClock::Parts& parts) {
   nlohmann::json j;
   j["name"] = sc.name;
   j["status"] = st.status;
@@ -286,6 +301,12 @@ nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& si
   j["simulated_time"] = st.frames_done * sc.time.frame_dt;
   j["steps"] = sum.steps;
   j["wall_time"] = sum.wall_time;
+  // The frames' wall time per task and its shares (docs/output.md), as the thesis reports them.
+  const double frames_wall = std::accumulate(parts.begin(), parts.end(), 0.0);
+  for (std::size_t k = 0; k < kTaskCount; ++k) {
+    j["wall_time_parts"][kTaskNames[k]] = parts[k];
+    j["wall_time_shares"][kTaskNames[k]] = frames_wall > 0 ? parts[k] / frames_wall : 0.0;
+  }
   j["splits"] = st.splits;
   j["merges"] = st.merges;
   if (sc.budget.realtime) {
@@ -340,12 +361,14 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
   std::vector<TimeLevelChange> changes;
   adapt.evaluate(sim);
   st.energies = hierarchy_energies(sim);
-  writer.write(0, 0.0, 0.0, st.energies);
+  FrameTiming timing(sim.task_clock());  // frame 0: its output only
+  writer.write(0, 0.0, 0.0, st.energies, timing);
   for (int frame = 1; frame <= frames; ++frame) {
-    const auto tf = Clock::now();
+    timing.restart();
+    const auto tf = timing.start();
     changes.clear();
     const int substeps = sim.steps_per_frame();
-    sim.advance_frame(&changes);
+    timing.phase(Task::Integration, [&] { sim.advance_frame(&changes); });
     if (sim.steps_per_frame() != substeps) report_substeps(sim, frame, substeps, writer, st);
     // The frame just simulated decides whether the hierarchy may grow at its boundary.
     const BudgetRule budget = budget_rule(sc, seconds_since(tf));
@@ -362,7 +385,7 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
       sum.frames = st.frames_done;
       sum.wall_time = seconds_since(t0);
       write_json_file(sc.output.dir / "summary.json",
-                      summary_json(sc, sim, st, sum, writer.peak_tool_force()));
+                      summary_json(sc, sim, st, sum, writer.peak_tool_force(), writer.run_parts()));
       throw RunError(st.message);
     }
     for (const TimeLevelChange& c : changes)
@@ -373,14 +396,14 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
       writer.event({frame, budget == BudgetRule::Shed ? "budget_shed" : "budget_hold", -1, -1});
       ++(budget == BudgetRule::Shed ? st.budget_shed : st.budget_hold);
     }
-    adapt.update(sim, frame, events, budget);
+    timing.phase(Task::Adaptivity, [&] { adapt.update(sim, frame, events, budget); });
     for (const HierarchyEvent& e : events) {
       st.splits += e.kind == "split";
       st.merges += e.kind == "merge";
       writer.event(e);
     }
     st.max_displacement = std::max(st.max_displacement, max_active_displacement(sim));
-    writer.write(frame, time, seconds_since(tf), st.energies);
+    writer.write(frame, time, seconds_since(tf), st.energies, timing);
     st.frames_done = frame;
     if (options.progress) options.progress({frame, frames, time, seconds_since(t0)});
   }
@@ -388,7 +411,7 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
   sum.frames = st.frames_done;
   sum.wall_time = seconds_since(t0);
   write_json_file(sc.output.dir / "summary.json",
-                  summary_json(sc, sim, st, sum, writer.peak_tool_force()));
+                  summary_json(sc, sim, st, sum, writer.peak_tool_force(), writer.run_parts()));
   return sum;
 }
 

@@ -146,6 +146,36 @@ def check_log(checks, log, frame_count):
         checks.expect(shape == (frame_count, levels), f"log.h5 /frames/{name} has shape {shape}")
     for name in ("frame", "kind", "level", "point"):
         checks.expect(f"/events/{name}" in log, f"log.h5: no /events/{name}")
+    check_time_parts(checks, log, frame_count)
+
+
+TASKS = ["internal_forces", "ghosts", "contact", "integration", "adaptivity", "output", "other"]
+
+
+def check_time_parts(checks, log, frame_count):
+    """Issue 17 point 3: the frame's wall time per task. The parts are >= 0, named, and without
+    `output` they are /frames/wall_time (both come from the same clock reads, to 1 ms)."""
+    parts = log["/frames/wall_time_parts"]
+    names = [str(n) for n in parts.attrs.get("names", [])]
+    checks.expect(parts.shape == (frame_count, len(TASKS)) and names == TASKS,
+                  f"log.h5 /frames/wall_time_parts has shape {parts.shape}, names {names}")
+    p, wall = parts[:], log["/frames/wall_time"][:]
+    out = TASKS.index("output")
+    checks.expect((p >= 0).all() and p[1:, TASKS.index("internal_forces")].min() > 0,
+                  "wall_time_parts: every part >= 0, internal forces > 0 in every frame")
+    simulated = p.sum(axis=1) - p[:, out]
+    checks.expect(abs(simulated[1:] - wall[1:]).max() < 1e-3,
+                  f"wall_time_parts without output = wall_time (worst "
+                  f"{abs(simulated[1:] - wall[1:]).max():.2e} s)")
+
+
+def check_summary_shares(checks, summary):
+    shares, parts = summary.get("wall_time_shares", {}), summary.get("wall_time_parts", {})
+    checks.expect(sorted(shares) == sorted(TASKS) and sorted(parts) == sorted(TASKS) and
+                  abs(sum(shares.values()) - 1) < 1e-9 and
+                  sum(parts.values()) <= summary["wall_time"],
+                  f"summary.json wall_time_shares sum to 1 over {sorted(shares)}, parts within "
+                  f"wall_time")
 
 
 def main():
@@ -181,7 +211,9 @@ def main():
             check_log(checks, log, len(entries))
             check_frames(checks, out_dir, entries, log, vtk, np, numpy_support)
         with open(os.path.join(out_dir, "summary.json"), encoding="utf-8") as f:
-            checks.expect(isinstance(json.load(f), dict), "summary.json is not a JSON object")
+            summary = json.load(f)
+            checks.expect(isinstance(summary, dict), "summary.json is not a JSON object")
+            check_summary_shares(checks, summary)
 
     print(f"{checks.passed} passed, {len(checks.failures)} failed")
     return 1 if checks.failures else 0

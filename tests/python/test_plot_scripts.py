@@ -89,17 +89,17 @@ def test_cli(source, liver, beam, tmp):
     check(r.returncode == 0 and "RUN_DIR" in r.stdout, "plot_run.py --help exits 0")
     r = script(source, "plot_run.py", liver)
     names = ["points_per_level.png", "time_levels.png", "tool_force.png", "energies.png",
-             "events.png"]
+             "events.png", "time_shares.png"]
     expected = [os.path.join(liver, "plots", n) for n in names]
     check(r.returncode == 0 and r.stdout.split() == expected,
-          "liver run: default OUT_DIR RUN_DIR/plots, the five files printed (exit %d) %s"
+          "liver run: default OUT_DIR RUN_DIR/plots, the six files printed (exit %d) %s"
           % (r.returncode, r.stderr.strip()[-200:]))
     check_pngs(expected, "liver run")
     out = os.path.join(tmp, "beam_plots")
     r = script(source, "plot_run.py", beam, "-o", out)
     listed = sorted(os.listdir(out)) if os.path.isdir(out) else []
-    check(r.returncode == 0 and "tool_force.png" not in listed and len(listed) == 4
-          and len(r.stdout.split()) == 4, "run without tools: no tool_force.png (%s)" % listed)
+    check(r.returncode == 0 and "tool_force.png" not in listed and len(listed) == 5
+          and len(r.stdout.split()) == 5, "run without tools: no tool_force.png (%s)" % listed)
     check_pngs([os.path.join(out, n) for n in listed], "beam run (-o)")
 
 
@@ -166,6 +166,23 @@ def test_series(pr, liver):
                                                                  kinds.count("merge")))
 
 
+def test_time_shares(pr, liver):
+    """The stack is the log's /frames/wall_time_parts (ms per frame, frame 0 left out), the
+    legend names every task with its share of the run, and the shares sum to 1."""
+    run = pr.read_run(os.path.join(liver, "log.h5"))
+    with h5py.File(os.path.join(liver, "log.h5"), "r") as log:
+        parts = log["frames/wall_time_parts"][:]
+        names = [str(n) for n in log["frames/wall_time_parts"].attrs["names"]]
+    ax = pr.plot_time_shares(run).axes[0]
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    shares = [float(l.split()[-2]) for l in labels]
+    top = max(p.vertices[:, 1].max() for c in ax.collections for p in c.get_paths())
+    check(len(labels) == len(names) == 7 and
+          all(l.startswith(n.replace("_", " ")) for l, n in zip(labels, names)) and
+          abs(sum(shares) - 100) < 0.5 and np.isclose(top, 1e3 * parts[1:].sum(axis=1).max()),
+          "time_shares: %s; stack top %.1f ms = the longest frame" % (labels, top))
+
+
 def test_time_levels(pr, beam):
     """Columns are labelled by their step (dt/2^k), the unused ones left out, and the stack
     reaches the number of integrated particles."""
@@ -194,7 +211,7 @@ def test_killed_run(source, pr, liver, tmp):
         t_end = log["frames/time"][-1]
         s = log["tool/time"].shape[0]
         for name in ("time", "kinetic_energy", "elastic_energy", "active", "ghosts",
-                     "time_levels"):
+                     "time_levels", "wall_time_parts"):
             d = log["frames/" + name]
             d.resize(n + 1, axis=0)
             d[n] = 999999
@@ -216,8 +233,10 @@ def test_killed_run(source, pr, liver, tmp):
     check(pr.event_counts(run)["split"].sum() == splits, "killed run: the next frame's event "
           "is dropped (%d splits)" % splits)
     r = script(source, "plot_run.py", folder)
-    check(r.returncode == 0 and len(r.stdout.split()) == 5, "killed run plots (exit %d)"
+    check(r.returncode == 0 and len(r.stdout.split()) == 6, "killed run plots (exit %d)"
           % r.returncode)
+    check(run["wall_time_parts"].shape[0] == n and run["wall_time_parts"].max() < 999999,
+          "killed run: the extra row of /frames/wall_time_parts is ignored")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -325,6 +344,7 @@ def main():
             test_cli(args.source, runs["liver"], runs["beam"], tmp)
             test_series(pr, runs["liver"])
             test_time_levels(pr, runs["beam"])
+            test_time_shares(pr, runs["liver"])
             test_killed_run(args.source, pr, runs["liver"], tmp)
     return cli.report()
 
