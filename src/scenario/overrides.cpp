@@ -19,8 +19,16 @@ struct Override {
   int rank = 0;
 };
 
+// "--set name=aaaa… (30005 characters)": messages stay readable whatever was given.
+std::string label(const std::string& text) {
+  constexpr std::size_t kShown = 60;
+  if (text.size() <= kShown + 20) return "--set " + text;
+  return "--set " + text.substr(0, kShown) + "… (" + std::to_string(text.size()) +
+         " characters)";
+}
+
 [[noreturn]] void fail(const std::string& text, const std::string& message) {
-  throw InputError("--set " + text + ": " + message);
+  throw InputError(label(text) + ": " + message);
 }
 
 std::vector<std::string> split_path(const std::string& text, const std::string& path) {
@@ -76,10 +84,45 @@ json& step_into(const Override& o, json& container, const std::string& key, std:
   return container[index];
 }
 
+// `key=null` removes the key, so that its default (or mrsim's computed value, e.g.
+// time.substeps) applies again; a key that is not there is left alone.
+void remove_one(const Override& o, json& document, SourceMap& positions) {
+  json* parent = &document;
+  std::string pointer;
+  for (std::size_t i = 0; i < o.path.size(); ++i) {
+    const std::string& key = o.path[i];
+    const bool last = i + 1 == o.path.size();
+    if (parent->is_object()) {
+      if (!parent->contains(key)) return;
+      pointer = child_pointer(pointer, key);
+      if (last) {
+        parent->erase(key);
+        break;
+      }
+      parent = &(*parent)[key];
+    } else if (parent->is_array()) {
+      const std::size_t index = list_index(o, key, *parent, pointer);
+      if (index >= parent->size()) return;
+      pointer = child_pointer(pointer, index);
+      if (last) {
+        parent->erase(index);
+        break;
+      }
+      parent = &(*parent)[index];
+    } else {
+      return;
+    }
+  }
+  positions.erase_subtree(pointer);
+}
+
 void apply_one(const Override& o, json& document, SourceMap& positions) {
-  const Location origin{"--set " + o.text, 0, 0, o.rank};
+  const Location origin{label(o.text), 0, 0, o.rank};
+  const std::string& v = o.value;
+  if (v == "null" || v == "Null" || v == "NULL" || v == "~")
+    return remove_one(o, document, positions);
   const json value =
-      yaml_to_json(o.value, YamlOptions{"--set " + o.text, /*positions=*/false, o.rank}).value;
+      yaml_to_json(o.value, YamlOptions{label(o.text), /*positions=*/false, o.rank}).value;
   json* slot = &document;
   std::string pointer;
   for (std::size_t i = 0; i < o.path.size(); ++i) {

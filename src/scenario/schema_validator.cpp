@@ -52,6 +52,29 @@ std::vector<Issue> raw_issues(const valijson::ValidationResults& results, const 
   return issues;
 }
 
+// valijson matches "pattern" with std::regex, which recurses once per character: a name of
+// 30 000 characters overflowed the stack (exit 139). No value of a scenario needs more than a
+// path's length, so longer strings are refused before the schema is applied, where they are.
+constexpr std::size_t kMaxText = 4096;         // PATH_MAX on Linux
+constexpr std::size_t kMaxDescription = 65536;  // free text, never matched by a pattern
+
+void long_strings(const json& value, const std::string& pointer, bool free_text,
+                  std::vector<Issue>& out) {
+  if (value.is_string()) {
+    const std::size_t n = value.get_ref<const std::string&>().size();
+    const std::size_t limit = free_text ? kMaxDescription : kMaxText;
+    if (n > limit)
+      out.push_back({pointer, "is " + std::to_string(n) + " bytes long; at most " +
+                                  std::to_string(limit) + " are accepted"});
+  } else if (value.is_object()) {
+    for (const auto& [key, item] : value.items())
+      long_strings(item, child_pointer(pointer, key), key == "description", out);
+  } else if (value.is_array()) {
+    for (std::size_t i = 0; i < value.size(); ++i)
+      long_strings(value[i], child_pointer(pointer, i), false, out);
+  }
+}
+
 }  // namespace
 
 std::string valijson_context_pointer(const std::vector<std::string>& context,
@@ -77,6 +100,9 @@ std::string valijson_context_pointer(const std::vector<std::string>& context,
 }
 
 std::vector<Issue> schema_issues(const json& document) {
+  std::vector<Issue> too_long;
+  long_strings(document, "", false, too_long);
+  if (!too_long.empty()) return too_long;
   valijson::Validator validator;
   valijson::ValidationResults results;
   valijson::adapters::NlohmannJsonAdapter adapter(document);

@@ -1,6 +1,8 @@
 #include "scenario/semantic_checks.hpp"
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 #include "scenario/issues.hpp"
 #include "scenario/json_path.hpp"
@@ -60,10 +62,22 @@ void check_loads(const json& document, std::vector<Issue>& issues) {
   }
 }
 
+// More frames than this would overflow the frame counters (duration 8.589934610e+7 s ran 9
+// frames) and could not be logged anyway: 1e8 rows of /frames are tens of GB.
+constexpr double kMaxFrames = 1.0e8;
+
 void check_time(const json& time, std::vector<Issue>& issues) {
-  if (time["duration"].get<double>() < time["frame_dt"].get<double>())
+  const double duration = time["duration"].get<double>(), frame_dt = time["frame_dt"].get<double>();
+  if (duration < frame_dt)
     issues.push_back({"/time/duration", "must be >= time.frame_dt (" + time["duration"].dump() +
                                             " < " + time["frame_dt"].dump() + ")"});
+  const double frames = duration / frame_dt;
+  if (!(frames <= kMaxFrames)) {
+    std::ostringstream os;
+    os << std::setprecision(3) << "gives " << frames << " frames of time.frame_dt "
+       << time["frame_dt"].dump() << " s; at most 1.0e+8 frames are run";
+    issues.push_back({"/time/duration", os.str()});
+  }
 }
 
 void check_material(const json& material, std::vector<Issue>& issues) {

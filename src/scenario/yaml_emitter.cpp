@@ -1,10 +1,11 @@
 #include "scenario/yaml_emitter.hpp"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
-#include <regex>
 #include <stdexcept>
+#include <string_view>
 
 #include "scenario/yaml_scalar.hpp"
 
@@ -29,17 +30,37 @@ std::string normalise_float(const std::string& shortest) {
 
 // Words PyYAML (YAML 1.1) reads as booleans or null although YAML 1.2 says string.
 bool is_yaml11_word(const std::string& text) {
-  static const std::regex words(
-      "y|Y|yes|Yes|YES|n|N|no|No|NO|on|On|ON|off|Off|OFF|true|True|TRUE|false|False|FALSE|"
-      "null|Null|NULL|~");
-  return std::regex_match(text, words);
+  static constexpr std::array<std::string_view, 25> words = {
+      "y",   "Y",   "yes",  "Yes",  "YES",   "n",     "N",     "no",    "No",
+      "NO",  "on",  "On",   "ON",   "off",   "Off",   "OFF",   "true",  "True",
+      "TRUE", "false", "False", "FALSE", "null", "Null", "NULL"};
+  return text == "~" || std::find(words.begin(), words.end(), text) != words.end();
+}
+
+bool is_ascii_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+
+bool is_word_char(char c) {
+  return is_ascii_letter(c) || (c >= '0' && c <= '9') || c == '_' || c == '.' || c == '/' ||
+         c == '-';
+}
+
+// (\.\.?/)?[A-Za-z_/][A-Za-z0-9_./-]*( [A-Za-z0-9_./-]+)*, scanned by hand: std::regex
+// recurses once per character and a 30 000-character output.dir overflowed the stack.
+bool has_plain_shape(const std::string& text) {
+  std::size_t i = text.rfind("../", 0) == 0 ? 3 : text.rfind("./", 0) == 0 ? 2 : 0;
+  if (i >= text.size() || !(is_ascii_letter(text[i]) || text[i] == '_' || text[i] == '/'))
+    return false;
+  for (++i; i < text.size(); ++i) {
+    if (text[i] == ' ' && i + 1 < text.size() && is_word_char(text[i + 1])) continue;
+    if (!is_word_char(text[i])) return false;
+  }
+  return true;
 }
 
 bool is_safe_plain(const std::string& text) {
   // Starts with a letter, '_', '/', "./" or "../" (not a digit, sign or lone '.': those may
   // read as numbers in one YAML version or the other); no characters YAML gives a meaning to.
-  static const std::regex plain(R"((\.\.?/)?[A-Za-z_/][A-Za-z0-9_./-]*( [A-Za-z0-9_./-]+)*)");
-  return std::regex_match(text, plain) && !is_yaml11_word(text) &&
+  return has_plain_shape(text) && !is_yaml11_word(text) &&
          resolve_plain_scalar(text).is_string();
 }
 

@@ -30,7 +30,8 @@ const std::string kCoreTag = "tag:yaml.org,2002:";
 
 class JsonBuilder final : public YAML::EventHandler {
  public:
-  explicit JsonBuilder(const YamlOptions& options) : options_(options) {}
+  JsonBuilder(const YamlOptions& options, std::string_view source)
+      : options_(options), source_(source) {}
 
   bool has_value() const { return has_root_ && !document_.value.is_null(); }
   YamlDocument take() { return std::move(document_); }
@@ -85,7 +86,10 @@ class JsonBuilder final : public YAML::EventHandler {
   void check_container_tag(const YAML::Mark& mark, const std::string& tag,
                            const std::string& kind) const;
 
+  void check_closed_quote(const YAML::Mark& mark) const;
+
   const YamlOptions& options_;
+  std::string_view source_;  // the text parsed, to check quoted scalars
   YamlDocument document_;
   bool has_root_ = false;
   int documents_ = 0;
@@ -277,6 +281,7 @@ void JsonBuilder::check_container_tag(const YAML::Mark& mark, const std::string&
 // core tags (!!str, !!int, ...) force or check a type.
 json JsonBuilder::typed_scalar(const YAML::Mark& mark, const std::string& tag,
                                const std::string& text) const {
+  if (tag == "!") check_closed_quote(mark);
   if (tag == "!" || tag == kCoreTag + "str") return text;
   if (tag != "?" && tag.rfind(kCoreTag, 0) != 0)
     fail_here(mark, "unsupported YAML tag '" + tag + "'");
@@ -293,6 +298,28 @@ json JsonBuilder::typed_scalar(const YAML::Mark& mark, const std::string& tag,
       (kind == "null" && value.is_null()))
     return value;
   fail_here(mark, "'" + text + "' is not a valid !!" + kind);
+}
+
+// yaml-cpp 0.7 reads a quoted scalar that is never closed up to the end of the text: `dir:
+// "out/beam` as the last key gave output.dir = `"out/beam every: 1 "` and exit 0. The closing
+// quote must exist: '"' ends a double-quoted scalar unless escaped by '\\', '\'' ends a
+// single-quoted one unless doubled.
+void JsonBuilder::check_closed_quote(const YAML::Mark& mark) const {
+  if (mark.pos < 0 || static_cast<std::size_t>(mark.pos) >= source_.size()) return;
+  const char quote = source_[mark.pos];
+  if (quote != '"' && quote != '\'') return;
+  for (std::size_t i = mark.pos + 1; i < source_.size(); ++i) {
+    if (quote == '"' && source_[i] == '\\') {
+      ++i;
+    } else if (source_[i] == quote) {
+      if (quote == '\'' && i + 1 < source_.size() && source_[i + 1] == '\'') {
+        ++i;
+        continue;
+      }
+      return;
+    }
+  }
+  fail_here(mark, std::string("unterminated quoted string: no closing ") + quote);
 }
 
 // Ignores every event: a first pass that only lets yaml-cpp find syntax errors.
@@ -339,7 +366,7 @@ YamlDocument yaml_to_json(std::string_view text, const YamlOptions& options) {
   // could misread ("[0, 0" looks like a list holding a mapping): find syntax errors first.
   SyntaxOnly syntax;
   parse_documents(copy, syntax, options);
-  JsonBuilder builder(options);
+  JsonBuilder builder(options, copy);
   parse_documents(copy, builder, options);
   if (!builder.has_value()) throw InputError(options.origin + ": empty YAML document");
   return builder.take();

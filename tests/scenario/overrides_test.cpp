@@ -23,6 +23,16 @@ TEST(Overrides, ScalarAndNestedValues) {
   EXPECT_EQ(s.output.dir, "out/other");  // the default follows the overridden name
 }
 
+// Issue 18 defect 10: `key=null` removes the key, so its default applies again.
+TEST(Overrides, NullRemovesTheKey) {
+  const Scenario s =
+      load_with({"time.substeps=16", "time.substeps=null", "material.damping.psi=null"});
+  EXPECT_EQ(s.time.substeps, 0) << "computed from the meshes again";
+  EXPECT_DOUBLE_EQ(s.material.psi, 0.0) << "a key that is not there is left alone";
+  EXPECT_INPUT_ERROR(load_with({"name=null"}), "name");  // required: the schema says so
+  EXPECT_INPUT_ERROR(load_with({"object.levels.0.mesh=null"}), "mesh");
+}
+
 TEST(Overrides, CreatesMissingMappings) {
   const Scenario s = load_with({"material.damping.psi=20", "output.vtk=false"});
   EXPECT_DOUBLE_EQ(s.material.psi, 20.0);
@@ -52,6 +62,16 @@ TEST(Overrides, InvalidValuesAreReportedAgainstTheOverride) {
   EXPECT_INPUT_ERROR(load_with({"time.substeps=many"}), "must be an integer (got 'many')");
   EXPECT_INPUT_ERROR(load_with({"gravity=[0, 0, .nan]"}), "--set gravity=[0, 0, .nan]: '.nan'");
   EXPECT_INPUT_ERROR(load_with({"gravity=[0, 0"}), "--set gravity=[0, 0: YAML syntax error");
+  // Issue 18 defect 3: frame counts no longer wrap (8.589934610e+7 s ran 9 frames).
+  EXPECT_INPUT_ERROR(load_with({"time.duration=8.589934610e+7"}),
+                     "time.duration: gives 2.15e+09 frames of time.frame_dt 0.04 s; at most "
+                     "1.0e+8 frames are run");
+  EXPECT_INPUT_ERROR(load_with({"time.frame_dt=1e-300"}), "at most 1.0e+8 frames are run");
+  EXPECT_NO_THROW(load_with({"time.duration=4.0e+6"}));  // 1e8 frames of 0.04 s
+  // A long value is shortened in the message (issue 18 defect 1), and refused, not a crash.
+  EXPECT_INPUT_ERROR(load_with({"name=" + std::string(30000, 'a')}),
+                     "--set name=" + std::string(55, 'a') + "… (30005 characters): name: is "
+                     "30000 bytes long; at most 4096 are accepted");
 }
 
 TEST(Overrides, UnknownPathIsAnUnknownKey) {

@@ -37,6 +37,24 @@ TEST(SchemaValidator, MessagesNameFileLineColumnAndKeyPath) {
                      "s.yaml:6:8: time.frame_dt: must be > 0 (got 0)");
 }
 
+// Issue 18 defect 1: valijson matches `pattern` with std::regex, which recursed once per
+// character; a 30 000-character name segfaulted. Long strings are now an input error.
+TEST(SchemaValidator, LongStringsAreAnIssueNotACrash) {
+  const std::string name(30000, 'a');
+  EXPECT_INPUT_ERROR(
+      validate_text("name: " + name + "\nobject:\n  levels:\n    - mesh: a.vtu\n"
+                    "material: {lambda: 1, mu: 1}\n"),
+      "s.yaml:1:1: name: is 30000 bytes long; at most 4096 are accepted");
+  const std::string dir(4097, 'd');
+  EXPECT_INPUT_ERROR(validate_text(kHead + "material: {lambda: 1, mu: 1}\noutput: {dir: " + dir +
+                                   "}\n"),
+                     "output.dir: is 4097 bytes long; at most 4096 are accepted");
+  // A long free-text description is fine, and 4096 bytes still are.
+  EXPECT_NO_THROW(validate_text("description: " + std::string(60000, 'x') + "\n" + kHead +
+                                "material: {lambda: 1, mu: 1}\noutput: {dir: " +
+                                std::string(4096, 'd') + "}\n"));
+}
+
 TEST(SchemaValidator, UnknownKeyWithoutCloseMatchListsTheKnownKeys) {
   EXPECT_INPUT_ERROR(validate_text(kHead + "material: {lambda: 1, mu: 1}\noutput: {zzz: 1}\n"),
                      "output.zzz: unknown key; expected one of: dir, every, vtk");

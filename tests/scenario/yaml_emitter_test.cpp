@@ -27,6 +27,25 @@ TEST(YamlEmitter, FloatsAlwaysHaveADotAndASignedExponent) {
   EXPECT_THROW(yaml_float(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
 }
 
+// Issue 18 defect 1: strings and numbers of tens of thousands of characters are emitted and
+// read back (std::regex, which recursed once per character, overflowed the stack).
+TEST(YamlEmitter, LongScalarsDoNotOverflowTheStack) {
+  const std::string words = std::string(60000, 'a') + " b/" + std::string(60000, 'c');
+  const json doc = {{"description", words}, {"digits", std::string(60000, '7')}};
+  const std::string yaml = to_block_yaml(doc);
+  EXPECT_EQ(yaml.rfind("description: aaa", 0), 0u) << "plain, not quoted";
+  EXPECT_EQ(reread(yaml)["description"], words);
+  EXPECT_EQ(reread(yaml)["digits"], std::string(60000, '7')) << "quoted: it would read as a number";
+  EXPECT_EQ(reread("x: 1.5e+3\n")["x"], 1500.0);
+  EXPECT_EQ(reread("x: .5\n")["x"], 0.5);
+  EXPECT_EQ(reread("x: 5.\n")["x"], 5.0);
+  EXPECT_EQ(reread("x: 0x1F\n")["x"], 31);
+  EXPECT_EQ(reread("x: 0o17\n")["x"], 15);
+  EXPECT_EQ(reread("x: 1.2.3\n")["x"], "1.2.3");
+  EXPECT_EQ(reread("x: 1e\n")["x"], "1e");
+  EXPECT_EQ(reread("x: ./a b\n")["x"], "./a b");
+}
+
 TEST(YamlEmitter, FloatsRoundTripExactly) {
   std::mt19937_64 random(42);
   std::uniform_real_distribution<double> mantissa(-10, 10);

@@ -50,6 +50,18 @@ TEST(YamlToJson, QuotedAndTaggedScalars) {
   EXPECT_INPUT_ERROR(value_of("a: !custom 1\n"), "unsupported YAML tag");
 }
 
+// Issue 18 defect 4: yaml-cpp read an unclosed quote to the end of the text and the run went
+// on with output.dir = "out/beam every: 1 ".
+TEST(YamlToJson, UnterminatedQuotesAreSyntaxErrors) {
+  EXPECT_INPUT_ERROR(parse("output:\n  dir: \"out/beam\n  every: 1\n"),
+                     "t.yaml:2:8: output.dir: unterminated quoted string: no closing \"");
+  EXPECT_INPUT_ERROR(parse("a: 'it''s\nb: 1\n"), "unterminated quoted string: no closing '");
+  EXPECT_INPUT_ERROR(parse("a: \"ends in an escaped quote\\\"\n"), "no closing \"");
+  EXPECT_EQ(value_of("a: 'it''s \"ok\"'\n")["a"], "it's \"ok\"");
+  EXPECT_EQ(value_of("a: \"x\\\"y\"\n")["a"], "x\"y");
+  EXPECT_EQ(value_of("a: \"two\n  lines\"\n")["a"], "two lines");
+}
+
 TEST(YamlToJson, NestedMappingsAndLists) {
   const json v = value_of("a:\n  b: [1, 2, {c: d}]\n  e:\n    - x\n    - y: 1\n");
   EXPECT_EQ(v, json::parse(R"({"a": {"b": [1, 2, {"c": "d"}], "e": ["x", {"y": 1}]}})"));
