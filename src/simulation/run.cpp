@@ -354,65 +354,84 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
       DivergenceGuard::for_level(sim.model(0), sc.time.divergence_energy_factor);
   const int frames = frame_count(sc.time);
 
-  FrameWriter writer(sc, sim, adapt);
   RunState st;
   RunSummary sum;
-  std::vector<HierarchyEvent> events;
-  std::vector<TimeLevelChange> changes;
-  adapt.evaluate(sim);
-  st.energies = hierarchy_energies(sim);
-  FrameTiming timing(sim.task_clock());  // frame 0: its output only
-  writer.write(0, 0.0, 0.0, st.energies, timing);
-  for (int frame = 1; frame <= frames; ++frame) {
-    timing.restart();
-    const auto tf = timing.start();
-    changes.clear();
-    const int substeps = sim.steps_per_frame();
-    timing.phase(Task::Integration, [&] { sim.advance_frame(&changes); });
-    if (sim.steps_per_frame() != substeps) report_substeps(sim, frame, substeps, writer, st);
-    // The frame just simulated decides whether the hierarchy may grow at its boundary.
-    const BudgetRule budget = budget_rule(sc, seconds_since(tf));
-    sum.steps = sim.steps();
-    const double time = frame * sc.time.frame_dt;
+  try {
+    FrameWriter writer(sc, sim, adapt);
+    std::vector<HierarchyEvent> events;
+    std::vector<TimeLevelChange> changes;
+    adapt.evaluate(sim);
     st.energies = hierarchy_energies(sim);
-    if (auto why = guard.check(sim, st.energies.elastic + st.energies.internal_kinetic)) {
-      std::ostringstream os;
-      os << "simulation diverged at frame " << frame << " (t = " << time << " s): " << *why;
-      st.status = "diverged";
-      st.message = os.str();
-      writer.event({frame, "divergence", -1, -1});
-      writer.close();
+    FrameTiming timing(sim.task_clock());  // frame 0: its output only
+    writer.write(0, 0.0, 0.0, st.energies, timing);
+    for (int frame = 1; frame <= frames; ++frame) {
+      timing.restart();
+      const auto tf = timing.start();
+      changes.clear();
+      const int substeps = sim.steps_per_frame();
+      timing.phase(Task::Integration, [&] { sim.advance_frame(&changes); });
+      if (sim.steps_per_frame() != substeps) report_substeps(sim, frame, substeps, writer, st);
+      // The frame just simulated decides whether the hierarchy may grow at its boundary.
+      const BudgetRule budget = budget_rule(sc, seconds_since(tf));
+      sum.steps = sim.steps();
+      const double time = frame * sc.time.frame_dt;
+      st.energies = hierarchy_energies(sim);
+      if (auto why = guard.check(sim, st.energies.elastic + st.energies.internal_kinetic)) {
+        std::ostringstream os;
+        os << "simulation diverged at frame " << frame << " (t = " << time << " s): " << *why;
+        st.status = "diverged";
+        st.message = os.str();
+        writer.event({frame, "divergence", -1, -1});
+        writer.close();
+        sum.frames = st.frames_done;
+        sum.wall_time = seconds_since(t0);
+        write_json_file(
+            sc.output.dir / "summary.json",
+            summary_json(sc, sim, st, sum, writer.peak_tool_force(), writer.run_parts()));
+        throw RunError(st.message);
+      }
+      for (const TimeLevelChange& c : changes)
+        writer.event({frame, c.to > c.from ? "time_refine" : "time_coarsen", c.level, c.point});
+      // Split/merge at the frame boundary (method.md §3.3): the frame written shows the new state.
+      events.clear();
+      if (budget != BudgetRule::Free) {
+        writer.event({frame, budget == BudgetRule::Shed ? "budget_shed" : "budget_hold", -1, -1});
+        ++(budget == BudgetRule::Shed ? st.budget_shed : st.budget_hold);
+      }
+      timing.phase(Task::Adaptivity, [&] { adapt.update(sim, frame, events, budget); });
+      for (const HierarchyEvent& e : events) {
+        st.splits += e.kind == "split";
+        st.merges += e.kind == "merge";
+        writer.event(e);
+      }
+      st.max_displacement = std::max(st.max_displacement, max_active_displacement(sim));
+      writer.write(frame, time, seconds_since(tf), st.energies, timing);
+      st.frames_done = frame;
+      if (options.progress) options.progress({frame, frames, time, seconds_since(t0)});
+    }
+    writer.close();
+    sum.frames = st.frames_done;
+    sum.wall_time = seconds_since(t0);
+    write_json_file(
+        sc.output.dir / "summary.json",
+        summary_json(sc, sim, st, sum, writer.peak_tool_force(), writer.run_parts()));
+    return sum;
+  } catch (const RunError& e) {
+    // An I/O failure (disk full, folder removed): summary.json still says what happened, when
+    // it can be written. A divergence has written its own.
+    if (st.status == "completed") {
+      st.status = "failed";
+      st.message = e.what();
       sum.frames = st.frames_done;
       sum.wall_time = seconds_since(t0);
-      write_json_file(sc.output.dir / "summary.json",
-                      summary_json(sc, sim, st, sum, writer.peak_tool_force(), writer.run_parts()));
-      throw RunError(st.message);
+      try {
+        write_json_file(sc.output.dir / "summary.json",
+                        summary_json(sc, sim, st, sum, std::nan(""), TaskClock::Parts{}));
+      } catch (const std::exception&) {  // the disk is full: the error above is what counts
+      }
     }
-    for (const TimeLevelChange& c : changes)
-      writer.event({frame, c.to > c.from ? "time_refine" : "time_coarsen", c.level, c.point});
-    // Split/merge at the frame boundary (method.md §3.3): the frame written shows the new state.
-    events.clear();
-    if (budget != BudgetRule::Free) {
-      writer.event({frame, budget == BudgetRule::Shed ? "budget_shed" : "budget_hold", -1, -1});
-      ++(budget == BudgetRule::Shed ? st.budget_shed : st.budget_hold);
-    }
-    timing.phase(Task::Adaptivity, [&] { adapt.update(sim, frame, events, budget); });
-    for (const HierarchyEvent& e : events) {
-      st.splits += e.kind == "split";
-      st.merges += e.kind == "merge";
-      writer.event(e);
-    }
-    st.max_displacement = std::max(st.max_displacement, max_active_displacement(sim));
-    writer.write(frame, time, seconds_since(tf), st.energies, timing);
-    st.frames_done = frame;
-    if (options.progress) options.progress({frame, frames, time, seconds_since(t0)});
+    throw;
   }
-  writer.close();
-  sum.frames = st.frames_done;
-  sum.wall_time = seconds_since(t0);
-  write_json_file(sc.output.dir / "summary.json",
-                  summary_json(sc, sim, st, sum, writer.peak_tool_force(), writer.run_parts()));
-  return sum;
 }
 
 }  // namespace mrsim

@@ -204,6 +204,29 @@ def test_liver_press(binary, source, tmp):
           "the support pushes back while the 1 N load is on (max %.2f N)" % reaction[:, 2].max())
 
 
+def test_disk_full(binary, source, tmp):
+    """Issue 18 defect 2: a log that cannot be written (files limited to 40 KiB, as on a full
+    disk) is exit 1 with the reason, and summary.json says "failed"; HDF5's shutdown at exit
+    used to segfault on the file it had failed to close (exit 139)."""
+    import resource
+    import signal
+
+    def limit():
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)  # write() then fails with EFBIG
+        resource.setrlimit(resource.RLIMIT_FSIZE, (40960, 40960))
+
+    out = os.path.join(tmp, "disk_full")
+    r = subprocess.run([binary, "run", os.path.join(source, "scenarios", "liver_probe.yaml"),
+                        "-o", out, "-q", "--set", "output.vtk=false"], capture_output=True,
+                       text=True, timeout=600, preexec_fn=limit)
+    summary = os.path.join(out, "summary.json")
+    status = json.load(open(summary))["status"] if os.path.exists(summary) else None
+    check(r.returncode == 1 and "log.h5" in r.stderr and "File too large (errno 27)" in r.stderr
+          and status == "failed",
+          "disk full: exit %d, summary status %s, %s" % (r.returncode, status,
+                                                         r.stderr.strip()[-160:]))
+
+
 def parse_args():
     """The ctest arguments; None (print why) when there is no binary to test: skip."""
     ap = argparse.ArgumentParser()
@@ -235,6 +258,7 @@ def main():
                                    0.5, (10, 25))
         test_adaptive_beam(args.binary, args.source, tmp)
         test_liver_press(args.binary, args.source, tmp)
+        test_disk_full(args.binary, args.source, tmp)
     return report()
 
 
