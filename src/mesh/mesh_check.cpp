@@ -128,9 +128,13 @@ std::vector<int> remove_unreferenced_points(RawMesh& raw, std::vector<std::int64
   return kept;
 }
 
+// With a report the caller prints its warnings (run.cpp does): printing here as well showed
+// every warning twice (issue 18 defect 9).
 void emit_warning(const std::string& message, MeshReadReport* report) {
-  warn(message);
-  if (report) report->warnings.push_back(message);
+  if (report)
+    report->warnings.push_back(message);
+  else
+    warn(message);
 }
 
 std::string first_ids(const std::vector<std::int64_t>& ids) {

@@ -19,7 +19,7 @@ struct MeshReadReport {
   int reoriented_tets = 0;          // inverted tets whose orientation was flipped
   int removed_vertices = 0;         // vertices used by no tet, dropped
   std::vector<int> kept_vertices;   // loaded vertex index -> 0-based position in the file
-  std::vector<std::string> warnings;  // also printed with warn()
+  std::vector<std::string> warnings;  // for the caller to print (no report: warn() prints them)
   std::vector<std::string> notes;     // not printed: "ignored 64 triangles"
 };
 

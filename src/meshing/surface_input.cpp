@@ -1,5 +1,8 @@
 #include "meshing/surface_input.hpp"
 
+#include <string>
+
+#include "core/log.hpp"
 #include "meshing/surface_checks.hpp"
 #include "meshing/surface_readers.hpp"
 #include "meshing/surface_source.hpp"
@@ -12,6 +15,13 @@ SurfaceInput load_surface_input(const std::filesystem::path& path, const std::st
   const std::size_t file_triangles = surface.triangles.size();
   const std::string name = path.filename().string();
   SurfaceCheckReport checks = check_surface(surface, path.string());
+  // Said, not only recorded: a surface exported with some facets the wrong way round may hide
+  // a modelling error (issue 18 defect 9).
+  if (checks.flipped_triangles > 0)
+    warn(path.string() + ": " + std::to_string(checks.flipped_triangles) + " of " +
+         std::to_string(surface.triangles.size()) +
+         " triangles faced inwards and were reoriented (outward normals follow the enclosed "
+         "volume)");
   scale_surface(surface, metres_per_unit);
   const double volume = checks.enclosed_volume * metres_per_unit * metres_per_unit * metres_per_unit;
   nlohmann::ordered_json description{

@@ -1,4 +1,5 @@
 // load_scenario: the pipeline from a YAML file to the typed Scenario.
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <sstream>
@@ -6,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "scenario/defaults.hpp"
+#include "scenario/json_path.hpp"
 #include "scenario/material.hpp"
 #include "scenario/overrides.hpp"
 #include "scenario/scenario.hpp"
@@ -49,12 +51,31 @@ void fill_computed_defaults(json& document) {
   scenario::add_derived_elastic_constants(document["material"]);
 }
 
+// `substeps: 512.0` is an integer for JSON Schema (draft 7: a number with no fraction), but
+// valijson types it by its JSON representation: where the schema asks for an integer, an
+// integral float becomes one before validation (issue 18 defect 10).
+void integral_floats_to_integers(json& value, const json& document, const std::string& pointer) {
+  if (value.is_object()) {
+    for (auto& [key, item] : value.items())
+      integral_floats_to_integers(item, document, scenario::child_pointer(pointer, key));
+  } else if (value.is_array()) {
+    for (std::size_t i = 0; i < value.size(); ++i)
+      integral_floats_to_integers(value[i], document, scenario::child_pointer(pointer, i));
+  } else if (value.is_number_float()) {
+    const double x = value.get<double>();
+    if (std::trunc(x) != x || std::abs(x) > 9.0e15) return;  // exact in a double and int64
+    const json* node = scenario::schema_at(pointer, document);
+    if (node && node->value("type", "") == "integer") value = static_cast<std::int64_t>(x);
+  }
+}
+
 }  // namespace
 
 Scenario load_scenario_text(std::string_view yaml, const fs::path& source,
                             const std::vector<std::string>& overrides) {
   auto [document, positions] = scenario::yaml_to_json(yaml, {source.string(), true, 0});
   scenario::apply_overrides(document, positions, overrides);
+  integral_floats_to_integers(document, document, "");
   scenario::validate_against_schema(document, positions);
   scenario::inject_defaults(document);
   fill_computed_defaults(document);

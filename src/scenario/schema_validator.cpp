@@ -58,20 +58,72 @@ std::vector<Issue> raw_issues(const valijson::ValidationResults& results, const 
 constexpr std::size_t kMaxText = 4096;         // PATH_MAX on Linux
 constexpr std::size_t kMaxDescription = 65536;  // free text, never matched by a pattern
 
-void long_strings(const json& value, const std::string& pointer, bool free_text,
+// The offset of the first byte that is not part of well-formed UTF-8 (no overlong forms, no
+// surrogates, at most U+10FFFF), or npos.
+std::size_t invalid_utf8_at(const std::string& s) {
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    int more = 0;
+    unsigned lo = 0x80, hi = 0xBF;  // the range of the second byte
+    if (c < 0x80) {
+      ++i;
+      continue;
+    } else if (c >= 0xC2 && c <= 0xDF) {
+      more = 1;
+    } else if (c >= 0xE0 && c <= 0xEF) {
+      more = 2;
+      if (c == 0xE0) lo = 0xA0;
+      if (c == 0xED) hi = 0x9F;
+    } else if (c >= 0xF0 && c <= 0xF4) {
+      more = 3;
+      if (c == 0xF0) lo = 0x90;
+      if (c == 0xF4) hi = 0x8F;
+    } else {
+      return i;
+    }
+    for (int k = 1; k <= more; ++k) {
+      if (i + k >= s.size()) return i;
+      const auto b = static_cast<unsigned char>(s[i + k]);
+      if (k == 1 ? (b < lo || b > hi) : (b < 0x80 || b > 0xBF)) return i;
+    }
+    i += more + 1;
+  }
+  return std::string::npos;
+}
+
+// Text that would be copied into every output: no NUL or other control character (tabs and
+// line breaks are fine), valid UTF-8 (issue 18 defect 9).
+void check_text(const std::string& s, const std::string& pointer, std::vector<Issue>& out) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7F) {
+      out.push_back({pointer, "contains the control character " + std::to_string(c) +
+                                  " at byte " + std::to_string(i) + "; write text only"});
+      return;
+    }
+  }
+  if (const std::size_t at = invalid_utf8_at(s); at != std::string::npos)
+    out.push_back({pointer, "is not valid UTF-8 (byte " + std::to_string(at) + ")"});
+}
+
+void text_issues(const json& value, const std::string& pointer, bool free_text,
                   std::vector<Issue>& out) {
   if (value.is_string()) {
-    const std::size_t n = value.get_ref<const std::string&>().size();
+    const std::string& text = value.get_ref<const std::string&>();
+    const std::size_t n = text.size();
     const std::size_t limit = free_text ? kMaxDescription : kMaxText;
     if (n > limit)
       out.push_back({pointer, "is " + std::to_string(n) + " bytes long; at most " +
                                   std::to_string(limit) + " are accepted"});
+    else
+      check_text(text, pointer, out);
   } else if (value.is_object()) {
     for (const auto& [key, item] : value.items())
-      long_strings(item, child_pointer(pointer, key), key == "description", out);
+      text_issues(item, child_pointer(pointer, key), key == "description", out);
   } else if (value.is_array()) {
     for (std::size_t i = 0; i < value.size(); ++i)
-      long_strings(value[i], child_pointer(pointer, i), false, out);
+      text_issues(value[i], child_pointer(pointer, i), false, out);
   }
 }
 
@@ -100,9 +152,9 @@ std::string valijson_context_pointer(const std::vector<std::string>& context,
 }
 
 std::vector<Issue> schema_issues(const json& document) {
-  std::vector<Issue> too_long;
-  long_strings(document, "", false, too_long);
-  if (!too_long.empty()) return too_long;
+  std::vector<Issue> bad_text;
+  text_issues(document, "", false, bad_text);
+  if (!bad_text.empty()) return bad_text;
   valijson::Validator validator;
   valijson::ValidationResults results;
   valijson::adapters::NlohmannJsonAdapter adapter(document);

@@ -74,6 +74,25 @@ def test_shape(binary, tmp):
     check(r.returncode == 0, f"a level passes mrsim check ({r.stderr.strip()[:200]})")
 
 
+def test_reoriented_facets_are_said(binary, source, tmp):
+    """Issue 18 defect 9: facets facing inwards are reoriented, and the run says how many."""
+    lines = open(os.path.join(source, "scenarios", "meshes", "liver_surface_cgal_h10_mm.off")).read().split("\n")
+    header = 1
+    while not lines[header].strip() or lines[header].startswith("#"):
+        header += 1
+    points, faces = (int(x) for x in lines[header].split()[:2])
+    first_face = header + 1 + points
+    for k in range(30):  # every tenth facet turned round
+        i = first_face + 10 * k
+        n, a, b, c = lines[i].split()[:4]
+        lines[i] = " ".join((n, a, c, b))
+    surface = os.path.join(tmp, "flipped.off")
+    open(surface, "w").write("\n".join(lines))
+    r = run(binary, "mesh", surface, "--units", "mm", "--tets", "60", "-o", os.path.join(tmp, "flipped"))
+    said = f"30 of {faces} triangles faced inwards and were reoriented"
+    check(r.returncode == 0 and said in r.stderr, f"reoriented facets are said: {r.stderr.strip()[:300]}")
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--binary", required=True)
@@ -84,6 +103,7 @@ def main():
         test_usage(a.binary, tmp)
         test_bad_surfaces(a.binary, a.shared, tmp)
         test_shape(a.binary, tmp)
+        test_reoriented_facets_are_said(a.binary, a.source, tmp)
     if FAILURES:
         print(f"{len(FAILURES)} failure(s)")
         sys.exit(1)

@@ -33,6 +33,14 @@ TEST(Overrides, NullRemovesTheKey) {
   EXPECT_INPUT_ERROR(load_with({"object.levels.0.mesh=null"}), "mesh");
 }
 
+// Issue 18 defect 10: an integral float is an integer where the schema asks for one.
+TEST(Overrides, IntegralFloatsAreIntegers) {
+  EXPECT_EQ(load_with({"time.substeps=512.0"}).time.substeps, 512);
+  EXPECT_EQ(load_with({"output.every=2.0e+0"}).output.every, 2);
+  EXPECT_INPUT_ERROR(load_with({"time.substeps=512.5"}), "time.substeps");
+  EXPECT_DOUBLE_EQ(load_with({"material.lambda=5.0"}).material.lambda, 5.0);  // stays a float
+}
+
 TEST(Overrides, CreatesMissingMappings) {
   const Scenario s = load_with({"material.damping.psi=20", "output.vtk=false"});
   EXPECT_DOUBLE_EQ(s.material.psi, 20.0);

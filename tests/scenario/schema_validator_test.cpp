@@ -55,6 +55,19 @@ TEST(SchemaValidator, LongStringsAreAnIssueNotACrash) {
                                 std::string(4096, 'd') + "}\n"));
 }
 
+// Issue 18 defect 9: a NUL or invalid UTF-8 in a text was copied into every output.
+TEST(SchemaValidator, TextIsValidUtf8WithoutControlCharacters) {
+  const std::string tail = kHead + "material: {lambda: 1, mu: 1}\n";
+  EXPECT_INPUT_ERROR(validate_text("description: \"a\\0b\"\n" + tail),
+                     "description: contains the control character 0 at byte 1");
+  EXPECT_INPUT_ERROR(validate_text("description: \"caf\xC3\"\n" + tail),
+                     "description: is not valid UTF-8 (byte 3)");
+  EXPECT_INPUT_ERROR(validate_text("description: \"\xED\xA0\x80\"\n" + tail),
+                     "is not valid UTF-8 (byte 0)");  // a surrogate
+  EXPECT_NO_THROW(validate_text("description: \"caf\xC3\xA9 \xE2\x86\x92 \xF0\x9F\x98\x80\tok\"\n" +
+                                tail));
+}
+
 TEST(SchemaValidator, UnknownKeyWithoutCloseMatchListsTheKnownKeys) {
   EXPECT_INPUT_ERROR(validate_text(kHead + "material: {lambda: 1, mu: 1}\noutput: {zzz: 1}\n"),
                      "output.zzz: unknown key; expected one of: dir, every, vtk");
