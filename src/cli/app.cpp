@@ -11,6 +11,7 @@
 #include "cli/progress_reporter.hpp"
 #include "cli/sweep_command.hpp"
 #include "core/error.hpp"
+#include "core/interruption.hpp"
 #include "core/log.hpp"
 #include "mrsim/version.hpp"
 #include "simulation/run.hpp"
@@ -48,11 +49,17 @@ int command_run(const CommonArgs& a) {
   ProgressReporter progress(!a.quiet);
   RunOptions options;
   options.progress = [&](const RunProgress& p) { progress(p); };
+  watch_interruptions();
   try {
     const RunSummary s = run_scenario(sc, options);
     progress.finish();
     info("mrsim: " + std::to_string(s.frames) + " frames, " + std::to_string(s.steps) +
          " steps in " + std::to_string(s.wall_time) + " s; outputs in " + sc.output.dir.string());
+    if (s.interrupted_by != 0) {
+      std::cerr << "mrsim: interrupted; every frame written so far is complete (summary.json: "
+                   "status \"interrupted\")\n";
+      return 128 + s.interrupted_by;
+    }
   } catch (...) {
     progress.finish();
     throw;

@@ -1,6 +1,7 @@
 #include "simulation/run.hpp"
 
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <ctime>
 #include <fstream>
@@ -9,8 +10,10 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/interruption.hpp"
 #include "core/log.hpp"
 #include "io/hdf5_log.hpp"
+#include "io/run_folder.hpp"
 #include "io/summary_json.hpp"
 #include "io/vtk_series_writer.hpp"
 #include "mesh/mesh_reader.hpp"
@@ -64,6 +67,14 @@ std::vector<const TetMesh*> pointers(const std::vector<TetMesh>& meshes) {
   std::vector<const TetMesh*> p;
   for (const TetMesh& m : meshes) p.push_back(&m);
   return p;
+}
+
+// Every file a run reads: none of them may be removed with a previous run's outputs.
+std::vector<std::filesystem::path> input_files(const Scenario& sc) {
+  std::vector<std::filesystem::path> files{sc.source, sc.skin};
+  for (const LevelSpec& level : sc.levels) files.push_back(level.mesh);
+  for (const ToolSpec& tool : sc.tools) files.push_back(tool.csv);
+  return files;
 }
 
 int frame_count(const TimeSpec& t) {
@@ -354,10 +365,13 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
       DivergenceGuard::for_level(sim.model(0), sc.time.divergence_energy_factor);
   const int frames = frame_count(sc.time);
 
+  // The folder is this run's from here on: locked, the previous run's outputs removed.
+  RunFolder folder(sc.output.dir, input_files(sc));
   RunState st;
   RunSummary sum;
   try {
     FrameWriter writer(sc, sim, adapt);
+    folder.remember("log.h5");  // open for the whole run: its removal would go unnoticed
     std::vector<HierarchyEvent> events;
     std::vector<TimeLevelChange> changes;
     adapt.evaluate(sim);
@@ -405,9 +419,21 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
         writer.event(e);
       }
       st.max_displacement = std::max(st.max_displacement, max_active_displacement(sim));
+      folder.check_intact();
       writer.write(frame, time, seconds_since(tf), st.energies, timing);
       st.frames_done = frame;
       if (options.progress) options.progress({frame, frames, time, seconds_since(t0)});
+      if (const int sig = interruption_signal(); sig != 0 && frame < frames) {
+        // core/interruption.hpp: the frame is written; stop here, cleanly.
+        std::ostringstream os;
+        os << "interrupted by " << (sig == SIGINT ? "SIGINT" : "SIGTERM") << " after frame "
+           << frame << " (t = " << time << " s) of " << frames;
+        st.status = "interrupted";
+        st.message = os.str();
+        writer.event({frame, "interrupted", -1, -1});
+        sum.interrupted_by = sig;
+        break;
+      }
     }
     writer.close();
     sum.frames = st.frames_done;

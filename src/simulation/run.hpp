@@ -25,6 +25,7 @@ struct RunSummary {
   int frames = 0;
   std::int64_t steps = 0;
   double wall_time = 0;
+  int interrupted_by = 0;  // SIGINT / SIGTERM that stopped the run after a whole frame, or 0
 };
 
 RunSummary run_scenario(const Scenario& scenario, const RunOptions& options = {});

@@ -227,6 +227,147 @@ def test_disk_full(binary, source, tmp):
                                                          r.stderr.strip()[-160:]))
 
 
+def test_mesh_warnings_once(binary, source, tmp):
+    """Issue 18 defect 9: a mesh warning (here one inverted tet, reoriented) is printed once by
+    `check` and by `run`, not twice (the reader printed it and so did the run)."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+    from vtkmodules.vtkCommonDataModel import VTK_TETRA, vtkCellArray, vtkUnstructuredGrid
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(os.path.join(source, "scenarios", "meshes", "beam_L0.vtu"))
+    reader.Update()
+    grid = reader.GetOutput()
+    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).copy()
+    conn[[0, 1]] = conn[[1, 0]]  # the first tet inverted
+    cells = vtkCellArray()
+    cells.SetData(numpy_to_vtk(vtk_to_numpy(grid.GetCells().GetOffsetsArray()).copy(), deep=1),
+                  numpy_to_vtk(conn, deep=1))
+    flipped = vtkUnstructuredGrid()
+    flipped.SetPoints(grid.GetPoints())
+    flipped.SetCells(VTK_TETRA, cells)
+    mesh = os.path.join(tmp, "inverted.vtu")
+    writer = vtkXMLUnstructuredGridWriter()
+    writer.SetFileName(mesh)
+    writer.SetInputData(flipped)
+    writer.Write()
+    scenario = os.path.join(tmp, "inverted.yaml")
+    with open(scenario, "w") as f:
+        f.write("name: inverted\nobject: {levels: [{mesh: inverted.vtu}]}\n"
+                "material: {lambda: 1.0e+4, mu: 1.0e+4}\ntime: {duration: 0.04}\n")
+    for command in ("check", "run"):
+        args = [command, scenario] + (["-o", os.path.join(tmp, "inverted_out")]
+                                      if command == "run" else [])
+        r = run(binary, *args)
+        count = r.stderr.count("were reoriented")
+        check(r.returncode == 0 and count == 1,
+              "%s: the reoriented tet is reported once (%d times, exit %d)"
+              % (command, count, r.returncode))
+
+
+def test_one_run_per_folder(binary, source, tmp):
+    """Issue 18, one run per folder: a second run into the folder of a run still going exits 2
+    and touches nothing; a folder holding a finished run is cleared of its outputs first (no
+    stale frames beside the new ones); the run never removes one of its own inputs."""
+    import time
+    out = os.path.join(tmp, "one_folder")
+    first = subprocess.Popen([binary, "run", os.path.join(source, "scenarios", "liver_probe.yaml"),
+                              "-o", out, "-q", "--set", "output.vtk=false",
+                              "--set", "time.duration=1.0"],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    log = os.path.join(out, "log.h5")
+    for _ in range(400):
+        if os.path.exists(log) or first.poll() is not None:
+            break
+        time.sleep(0.025)
+    before = open(os.path.join(out, "scenario.yaml")).read()
+    r = run(binary, "run", os.path.join(source, "scenarios", "beam.yaml"), "-o", out, "-q")
+    still_going = first.poll() is None
+    check(still_going and r.returncode == 2 and "a run still going" in r.stderr
+          and open(os.path.join(out, "scenario.yaml")).read() == before
+          and not os.path.exists(os.path.join(out, "frames")),
+          "a second run into a running run's folder exits 2 and touches nothing (%d: %s)"
+          % (r.returncode, r.stderr.strip()[-160:]))
+    first.wait(timeout=600)
+    with h5py.File(log, "r") as h5:
+        rows = h5["/frames/time"].shape[0]
+    check(first.returncode == 0 and rows == 51, "the first run ends normally, its log intact "
+          "(%d rows)" % rows)
+    beam = os.path.join(source, "scenarios", "beam.yaml")
+    run(binary, "run", beam, "-o", out, "-q", "--set", "time.duration=0.2")
+    r = run(binary, "run", beam, "-o", out, "-q", "--set", "time.duration=0.04")
+    frames = sorted(f for f in os.listdir(os.path.join(out, "frames")) if f.endswith(".vtm"))
+    check(r.returncode == 0 and len(frames) == len(pvd_times(out)) == 3 and
+          json.load(open(os.path.join(out, "summary.json")))["name"] == "beam",
+          "a finished run's folder is taken over cleanly: %d frame files for %d in frames.pvd"
+          % (len(frames), len(pvd_times(out))))
+    own = os.path.join(tmp, "own_folder")
+    os.makedirs(own)
+    text = open(beam).read().replace("meshes/", os.path.join(source, "scenarios", "meshes") + "/")
+    open(os.path.join(own, "scenario.yaml"), "w").write(text)
+    r = subprocess.run([binary, "run", "scenario.yaml", "-o", ".", "-q"], cwd=own,
+                       capture_output=True, text=True, timeout=600)
+    check(r.returncode == 2 and "holds an input of this run" in r.stderr and
+          open(os.path.join(own, "scenario.yaml")).read() == text,
+          "-o . beside its own scenario.yaml: refused (exit %d), the scenario kept" % r.returncode)
+
+
+def test_interruption(binary, source, tmp):
+    """Issue 18: SIGINT and SIGTERM finish the frame under way, write it and summary.json with
+    status "interrupted", and exit 130 / 143; frames.pvd and log.h5 then hold the same frames,
+    each complete."""
+    import signal
+    import time
+    for sig, code in ((signal.SIGINT, 130), (signal.SIGTERM, 143)):
+        out = os.path.join(tmp, "interrupted_%d" % code)
+        p = subprocess.Popen([binary, "run", os.path.join(source, "scenarios", "liver_probe.yaml"),
+                              "-o", out, "-q"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True)
+        pvd = os.path.join(out, "frames.pvd")
+        for _ in range(2000):
+            if p.poll() is not None:
+                break
+            try:
+                if len(pvd_times(out)) >= 4:
+                    break
+            except (OSError, ET.ParseError):
+                pass
+            time.sleep(0.01)
+        p.send_signal(sig)
+        _, err = p.communicate(timeout=600)
+        summary = json.load(open(os.path.join(out, "summary.json")))
+        with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
+            rows = h5["/frames/frame"].shape[0]
+            kinds = list(h5["/events/kind"].asstr()[:])
+        listed = len(pvd_times(out))
+        leftovers = [f for f in os.listdir(out) if f.endswith(".tmp")]
+        check(p.returncode == code and summary["status"] == "interrupted" and
+              "interrupted by" in summary["message"] and kinds[-1] == "interrupted" and
+              rows == listed == summary["frames"] + 1 and 4 <= listed < 71 and not leftovers,
+              "%s: exit %d, status %s, %d frames in frames.pvd and %d rows in log.h5 (%s)"
+              % (sig.name, p.returncode, summary["status"], listed, rows, err.strip()[-120:]))
+
+
+def test_folder_removed(binary, source, tmp):
+    """Issue 18 defect 5: the output folder removed during a run is exit 1 naming it (it was
+    exit 0, "completed", with the log lost)."""
+    import shutil
+    import time
+    out = os.path.join(tmp, "removed")
+    # Without VTK frames nothing else would notice: the log is written to an open file.
+    p = subprocess.Popen([binary, "run", os.path.join(source, "scenarios", "liver_probe.yaml"),
+                          "-o", out, "-q", "--set", "output.vtk=false"],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    for _ in range(2000):
+        if p.poll() is not None or os.path.exists(os.path.join(out, "log.h5")):
+            break
+        time.sleep(0.01)
+    time.sleep(0.3)
+    shutil.rmtree(out, ignore_errors=True)
+    _, err = p.communicate(timeout=600)
+    check(p.returncode == 1 and "was removed during the run" in err,
+          "folder removed mid-run: exit %d, %s" % (p.returncode, err.strip()[-160:]))
+
+
 def parse_args():
     """The ctest arguments; None (print why) when there is no binary to test: skip."""
     ap = argparse.ArgumentParser()
@@ -259,6 +400,10 @@ def main():
         test_adaptive_beam(args.binary, args.source, tmp)
         test_liver_press(args.binary, args.source, tmp)
         test_disk_full(args.binary, args.source, tmp)
+        test_mesh_warnings_once(args.binary, args.source, tmp)
+        test_one_run_per_folder(args.binary, args.source, tmp)
+        test_interruption(args.binary, args.source, tmp)
+        test_folder_removed(args.binary, args.source, tmp)
     return report()
 
 
