@@ -24,6 +24,7 @@ namespace {
 
 constexpr const char* kFramesDir = "frames";
 constexpr const char* kPvdName = "frames.pvd";
+constexpr const char* kPartialDir = ".partial";  // frames/.partial: a frame being written
 
 // frames/frame_NNNNNN.vtm, relative to the output folder (the form the .pvd refers to).
 std::filesystem::path frame_file(int frame_index) {
@@ -101,10 +102,32 @@ void VtkSeriesWriter::write_frame(int frame_index, double time,
                                   std::span<const ToolFrameView> tools) {
   check_frame(levels, surface, tools);
   const std::filesystem::path relative = frame_file(frame_index);
-  write_vtm(out_dir_ / relative, frame_blocks(levels, surface, tools, time));
+  write_complete(relative, frame_blocks(levels, surface, tools, time));
   // Listed only once its file is complete: the .pvd never names a half-written frame.
   entries_.push_back({frame_index, time, relative});
   write_pvd();
+}
+
+// The frame is written in frames/.partial/ (the same relative layout, so the .vtm's references
+// to its pieces hold) and moved under its final names once complete, pieces first, the .vtm
+// last: a run killed while writing leaves only frames/.partial behind, never a half-written
+// file under a final name (issue 18 defect 8; the next run into the folder removes frames/).
+void VtkSeriesWriter::write_complete(const std::filesystem::path& relative,
+                                     vtkMultiBlockDataSet* blocks) const {
+  namespace fs = std::filesystem;
+  const fs::path frames = out_dir_ / kFramesDir, partial = frames / kPartialDir;
+  const fs::path vtm = relative.filename(), pieces = fs::path(vtm).replace_extension();
+  std::error_code ec;
+  fs::create_directories(partial, ec);
+  if (ec)
+    throw RunError("cannot write " + (out_dir_ / relative).string() + ": cannot create " +
+                   partial.string() + ": " + ec.message());
+  write_vtm(partial / vtm, blocks);
+  if (fs::exists(partial / pieces, ec)) fs::rename(partial / pieces, frames / pieces, ec);
+  if (!ec) fs::rename(partial / vtm, frames / vtm, ec);
+  if (ec) throw RunError("cannot move " + (partial / vtm).string() + " into " + frames.string() +
+                         ": " + ec.message());
+  fs::remove(partial, ec);  // empty again; a failure here loses nothing
 }
 
 void VtkSeriesWriter::write_pvd() const {

@@ -10,6 +10,8 @@
 
 #include "io/frame_data.hpp"
 
+class vtkMultiBlockDataSet;
+
 namespace mrsim {
 
 class VtkSeriesWriter {
@@ -26,6 +28,7 @@ class VtkSeriesWriter {
  private:
   struct Entry { int index; double time; std::filesystem::path file; };
   void write_pvd() const;
+  void write_complete(const std::filesystem::path& relative, vtkMultiBlockDataSet* blocks) const;
   std::filesystem::path out_dir_;
   std::vector<Entry> entries_;
 };

@@ -368,6 +368,49 @@ def test_folder_removed(binary, source, tmp):
           "folder removed mid-run: exit %d, %s" % (p.returncode, err.strip()[-160:]))
 
 
+def test_killed_runs_leave_complete_files(binary, source, tmp):
+    """Issue 18 defect 8: after SIGKILL at any moment, every file under a final name is complete
+    (VTK XML files end with </VTKFile>; a frame is written in frames/.partial and moved), every
+    frame frames.pvd lists exists, and log.h5 holds no more frames than frames.pvd."""
+    import signal
+    import time
+    bad = []
+    for trial, delay in enumerate((0.4, 0.7, 0.9, 1.2, 1.5, 1.8, 2.2, 2.6)):
+        out = os.path.join(tmp, "killed_%d" % trial)
+        p = subprocess.Popen([binary, "run", os.path.join(source, "scenarios", "liver_probe.yaml"),
+                              "-o", out, "-q"], stdout=subprocess.DEVNULL,
+                             stderr=subprocess.DEVNULL)
+        time.sleep(delay)
+        p.send_signal(signal.SIGKILL)
+        p.wait()
+        frames = os.path.join(out, "frames")
+        for root, dirs, files in os.walk(frames):
+            dirs[:] = [d for d in dirs if d != ".partial"]
+            for name in files:
+                with open(os.path.join(root, name), "rb") as f:
+                    f.seek(max(0, os.path.getsize(f.name) - 64))
+                    if not f.read().rstrip().endswith(b"</VTKFile>"):
+                        bad.append("trial %d: %s is incomplete" % (trial, name))
+        try:
+            listed = [os.path.join(out, "frames", "frame_%06d.vtm" % k)
+                      for k in range(len(pvd_times(out)))]
+        except (OSError, ET.ParseError):
+            listed = []
+        bad += ["trial %d: %s listed but missing" % (trial, f) for f in listed
+                if not os.path.exists(f)]
+        if os.path.exists(os.path.join(out, "log.h5")):
+            try:
+                with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
+                    rows = h5["/frames/frame"].shape[0]
+            except (OSError, KeyError):
+                rows = 0
+            if rows > len(listed):
+                bad.append("trial %d: log.h5 has %d frames, frames.pvd %d" % (trial, rows,
+                                                                            len(listed)))
+    check(not bad, "8 runs killed at 0.4-2.6 s: complete files only, pvd and log agree %s"
+          % bad[:3])
+
+
 def parse_args():
     """The ctest arguments; None (print why) when there is no binary to test: skip."""
     ap = argparse.ArgumentParser()
@@ -404,6 +447,7 @@ def main():
         test_one_run_per_folder(args.binary, args.source, tmp)
         test_interruption(args.binary, args.source, tmp)
         test_folder_removed(args.binary, args.source, tmp)
+        test_killed_runs_leave_complete_files(args.binary, args.source, tmp)
     return report()
 
 
