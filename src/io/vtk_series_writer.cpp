@@ -125,8 +125,9 @@ void VtkSeriesWriter::write_complete(const std::filesystem::path& relative,
   write_vtm(partial / vtm, blocks);
   if (fs::exists(partial / pieces, ec)) fs::rename(partial / pieces, frames / pieces, ec);
   if (!ec) fs::rename(partial / vtm, frames / vtm, ec);
-  if (ec) throw RunError("cannot move " + (partial / vtm).string() + " into " + frames.string() +
-                         ": " + ec.message());
+  if (ec)
+    throw RunError("cannot move " + (partial / vtm).string() + " into " + frames.string() + ": " +
+                   ec.message());
   fs::remove(partial, ec);  // empty again; a failure here loses nothing
 }
 
