@@ -5,6 +5,7 @@
 
 #include "simulation/contact_setup.hpp"
 #include "simulation/fixed_points.hpp"
+#include "simulation/level_consistency.hpp"
 #include "simulation/surface_load_distribution.hpp"
 
 namespace mrsim {
@@ -21,6 +22,7 @@ MaterialLaw material_law(const MaterialSpec& spec) {
 }
 
 HierarchySetup hierarchy_setup(const Scenario& sc, const std::vector<const TetMesh*>& meshes) {
+  check_level_consistency(sc, meshes);
   HierarchySetup s;
   s.law = material_law(sc.material);
   s.gravity = sc.gravity;
