@@ -7,17 +7,21 @@
 namespace mrsim::h5 {
 namespace {
 
-// Opens `name` for overwriting when it exists (values such as counters are rewritten), else
-// creates it with `type` and a scalar dataspace.
-Handle scalar_attribute(hid_t object, const char* name, hid_t type, Where where) {
+// Creates attribute `name` with `type` and `space`, replacing it when it exists (values such
+// as counters are rewritten).
+Handle new_attribute(hid_t object, const char* name, hid_t type, hid_t space, Where where) {
   const htri_t exists = H5Aexists(object, name);
   check(exists, where, std::string("look up attribute ") + name);
   if (exists > 0) {
     check(H5Adelete(object, name), where, std::string("replace attribute ") + name);
   }
+  return checked(H5Acreate2(object, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose, where,
+                 std::string("create attribute ") + name);
+}
+
+Handle scalar_attribute(hid_t object, const char* name, hid_t type, Where where) {
   Handle space = checked(H5Screate(H5S_SCALAR), H5Sclose, where, "create scalar dataspace");
-  return checked(H5Acreate2(object, name, type, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
-                 where, std::string("create attribute ") + name);
+  return new_attribute(object, name, type, space.get(), where);
 }
 
 }  // namespace
@@ -42,14 +46,9 @@ void set_int64_attribute(hid_t object, const char* name, std::int64_t value, Whe
 void set_string_list_attribute(hid_t object, const char* name,
                                std::span<const char* const> values, Where where) {
   Handle type = utf8_string_type(where);
-  const htri_t exists = H5Aexists(object, name);
-  check(exists, where, std::string("look up attribute ") + name);
-  if (exists > 0) check(H5Adelete(object, name), where, std::string("replace attribute ") + name);
   const hsize_t n = values.size();
   Handle space = checked(H5Screate_simple(1, &n, nullptr), H5Sclose, where, "create dataspace");
-  Handle attribute =
-      checked(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-              H5Aclose, where, std::string("create attribute ") + name);
+  Handle attribute = new_attribute(object, name, type.get(), space.get(), where);
   check(H5Awrite(attribute.get(), type.get(), values.data()), where,
         std::string("write attribute ") + name);
   check(attribute.close(), where, std::string("close attribute ") + name);

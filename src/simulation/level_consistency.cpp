@@ -23,11 +23,9 @@ Extent extent_of(const TetMesh& m) {
     e.lo = e.lo.cwiseMin(p);
     e.hi = e.hi.cwiseMax(p);
   }
-  for (const Tet& t : m.tets) {
-    const Vec3 a = m.points[t[0]];
-    e.volume += std::abs((m.points[t[1]] - a).dot((m.points[t[2]] - a).cross(m.points[t[3]] - a)));
-  }
-  e.volume /= 6.0;
+  for (const Tet& t : m.tets)
+    e.volume +=
+        std::abs(signed_volume(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]));
   return e;
 }
 

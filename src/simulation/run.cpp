@@ -345,6 +345,16 @@ nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& si
   return j;
 }
 
+// sum gets the frames done and the wall time so far; summary.json says how the run ended.
+void write_summary(const Scenario& sc, const HierarchicalSimulation& sim, const RunState& st,
+                   Clock::time_point t0, double peak_tool_force, const TaskClock::Parts& parts,
+                   RunSummary& sum) {
+  sum.frames = st.frames_done;
+  sum.wall_time = seconds_since(t0);
+  write_json_file(sc.output.dir / "summary.json",
+                  summary_json(sc, sim, st, sum, peak_tool_force, parts));
+}
+
 }  // namespace
 
 Scenario check_scenario_inputs(const Scenario& sc) {
@@ -397,11 +407,7 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
         st.message = os.str();
         writer.event({frame, "divergence", -1, -1});
         writer.close();
-        sum.frames = st.frames_done;
-        sum.wall_time = seconds_since(t0);
-        write_json_file(
-            sc.output.dir / "summary.json",
-            summary_json(sc, sim, st, sum, writer.peak_tool_force(), writer.run_parts()));
+        write_summary(sc, sim, st, t0, writer.peak_tool_force(), writer.run_parts(), sum);
         throw RunError(st.message);
       }
       for (const TimeLevelChange& c : changes)
@@ -436,11 +442,7 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
       }
     }
     writer.close();
-    sum.frames = st.frames_done;
-    sum.wall_time = seconds_since(t0);
-    write_json_file(
-        sc.output.dir / "summary.json",
-        summary_json(sc, sim, st, sum, writer.peak_tool_force(), writer.run_parts()));
+    write_summary(sc, sim, st, t0, writer.peak_tool_force(), writer.run_parts(), sum);
     return sum;
   } catch (const RunError& e) {
     // An I/O failure (disk full, folder removed): summary.json still says what happened, when
@@ -448,11 +450,8 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
     if (st.status == "completed") {
       st.status = "failed";
       st.message = e.what();
-      sum.frames = st.frames_done;
-      sum.wall_time = seconds_since(t0);
       try {
-        write_json_file(sc.output.dir / "summary.json",
-                        summary_json(sc, sim, st, sum, std::nan(""), TaskClock::Parts{}));
+        write_summary(sc, sim, st, t0, std::nan(""), TaskClock::Parts{}, sum);
       } catch (const std::exception&) {  // the disk is full: the error above is what counts
       }
     }
