@@ -24,7 +24,26 @@ void edge_lengths(LevelModel& m) {
   }
 }
 
+// The level's spectra against its largest point bounds (physics/spectral_bound.hpp).
+void measure_spectrum(LevelModel& m) {
+  double k_max = 0, c_max = 0;
+  for (const PointInertia& p : m.star)
+    if (p.mass > 0) {
+      k_max = std::max(k_max, p.stiffness / p.mass);
+      c_max = std::max(c_max, p.damping / p.mass);
+    }
+  m.stiffness_spectrum =
+      spectral_scale(largest_mass_scaled_eigenvalue(m.adj, m.K, m.mass), k_max);
+  m.damping_spectrum = spectral_scale(largest_mass_scaled_eigenvalue(m.adj, m.D, m.mass), c_max);
+}
+
 }  // namespace
+
+PointInertia calibrated(PointInertia p, const LevelModel& m) {
+  p.stiffness *= m.stiffness_spectrum.scale;
+  p.damping *= m.damping_spectrum.scale;
+  return p;
+}
 
 LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law) {
   LevelModel m;
@@ -43,6 +62,7 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law) {
   edge_lengths(m);
   m.bounds = tet_energy_bounds(m.geo, law);
   m.star = star_inertia(m.adj, m.bounds, m.mass);
+  measure_spectrum(m);
   return m;
 }
 

@@ -6,6 +6,7 @@
 #include "physics/edge_operators.hpp"
 #include "physics/material_law.hpp"
 #include "physics/point_adjacency.hpp"
+#include "physics/spectral_bound.hpp"
 #include "physics/stable_step_bound.hpp"
 #include "physics/tet_geometry.hpp"
 
@@ -24,6 +25,9 @@ struct LevelModel {
   std::vector<Mat3> D;               // φA + ψB per CSR entry (Cauchy damping); empty if undamped
   std::vector<double> laplacian_w;   // w_ij = -Σ_t V_t ∇N_i·∇N_j per CSR entry (§3.1)
   TetEnergyBounds bounds;            // energy bounds of each tet (stable step)
+  // λ_max(M⁻¹K), λ_max(M⁻¹D) of the level alone and the scales they give its point bounds for
+  // one global step (physics/spectral_bound.hpp, calibrated()).
+  SpectralScale stiffness_spectrum, damping_spectrum;
   std::vector<PointInertia> star;    // mass and bounds of each point's whole star
 
   int num_points() const { return adj.num_points(); }
@@ -31,5 +35,13 @@ struct LevelModel {
 };
 
 LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law);
+
+/// A point bound of level `m` (its star, or what reaches it in the hierarchy, without contact)
+/// scaled by the level's spectrum, for the one global step: the level alone is then estimated
+/// at kSpectralMargin of its largest eigenvalue instead of 2–2.5 times it. Time levels keep the
+/// proven local bounds: a uniform scale could make a point whose star bound is tight, next to
+/// one where it is loose, step beyond its own limit (the tiny-tet slab of
+/// tests/simulation/test_time_levels.cpp did).
+PointInertia calibrated(PointInertia p, const LevelModel& m);
 
 }  // namespace mrsim

@@ -90,6 +90,7 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
     update_external(0.0);
   }
   semi_implicit_ = is_semi_implicit(setup.integrator);
+  global_step_ = !setup.time_levels;
   update_inertia();
   stepper_ = std::make_unique<Stepper>(setup.integrator, std::move(blocks),
                                        [this] { after_positions(); }, std::move(gathered));
@@ -493,7 +494,10 @@ void HierarchicalSimulation::update_stable_steps() {
   for (int l = 0; l < L; ++l) {
     loaded_[l].resize(models_[l]->num_points());
     stable_dt_[l].resize(models_[l]->num_points(), 0.0);
-    for (int p : lists_->active(l)) loaded_[l][p] = inertia_[l][p];
+    // One global step: each level's bounds calibrated by its spectrum (LevelModel calibrated());
+    // time levels step on the proven local bounds.
+    for (int p : lists_->active(l))
+      loaded_[l][p] = global_step_ ? calibrated(inertia_[l][p], *models_[l]) : inertia_[l][p];
   }
   if (contact_) {
     near_.clear();

@@ -110,6 +110,13 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
     models.push_back(build_level_model(*meshes[l], law));
     star.push_back(models.back().star);
   }
+  auto own = [&](int l, int p) {  // without contact
+    const PointInertia& s = models[l].star[p];
+    return sc.time_levels.enabled ? s : calibrated(s, models[l]);
+  };
+  // One global step: calibrated by the level's spectrum; time levels: proven local bounds.
+  for (int l = 0; l <= last; ++l)
+    for (int p = 0; p < static_cast<int>(star[l].size()); ++p) star[l][p] = own(l, p);
   add_tool_contact(sc, {meshes.begin(), meshes.begin() + last + 1}, law, star);
   StableStep best{std::numeric_limits<double>::infinity(), 0, 0, ""};
   for (int l = 0; l <= last; ++l)
@@ -118,7 +125,7 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
       if (dt < best.dt) best = {dt, l, p, ""};
     }
   if (std::isfinite(best.dt))
-    best.cause = cause_at(star[best.level][best.point], models[best.level].star[best.point], semi,
+    best.cause = cause_at(star[best.level][best.point], own(best.level, best.point), semi,
                           models[best.level].min_edge[best.point]);
   return best;
 }

@@ -38,11 +38,12 @@ TEST(StableStep, ShortestEdgeOfABoxIsItsSmallestCellSide) {
               1e-15);
 }
 
-// The smallest per-point estimate of a mesh alone (whole stars, no contact).
+// The smallest per-point estimate of a mesh alone (whole stars, no contact), calibrated by
+// its spectrum as for one global step (physics/spectral_bound.hpp).
 double level_estimate(const TetMesh& mesh, const Scenario& sc, bool semi = false) {
   const LevelModel m = build_level_model(mesh, material_law(sc.material));
   double dt = INFINITY;
-  for (const PointInertia& p : m.star) dt = std::min(dt, stable_step_of(p, semi));
+  for (const PointInertia& p : m.star) dt = std::min(dt, stable_step_of(calibrated(p, m), semi));
   return dt;
 }
 

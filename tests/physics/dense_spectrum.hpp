@@ -1,0 +1,53 @@
+#pragma once
+// Test helpers for the stable step: materials, jittered boxes and the dense truth, the largest
+// eigenvalue of M^-1/2 K M^-1/2 of a whole level (small meshes only).
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <random>
+
+#include "mesh/box_mesh.hpp"
+#include "physics/level_model.hpp"
+
+namespace mrsim::test_support {
+
+inline MaterialLaw law_with(double lambda, double mu, double phi = 0, double psi = 0) {
+  MaterialLaw law;
+  law.strain = StrainMeasure::Cauchy;
+  law.lambda = lambda;
+  law.mu = mu;
+  law.phi = phi;
+  law.psi = psi;
+  law.density = 1000;
+  return law;
+}
+
+inline TetMesh jittered_box(int nx, int ny, int nz, double jitter, unsigned seed) {
+  TetMesh m = make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.04, 0.03), nx, ny, nz);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(-jitter, jitter);
+  const Vec3 h(0.1 / nx, 0.04 / ny, 0.03 / nz);
+  for (Vec3& p : m.points)
+    if (p.x() > 1e-9 && p.x() < 0.1 - 1e-9 && p.y() > 1e-9 && p.y() < 0.04 - 1e-9 && p.z() > 1e-9 &&
+        p.z() < 0.03 - 1e-9)
+      p += Vec3(d(rng) * h.x(), d(rng) * h.y(), d(rng) * h.z());
+  return m;
+}
+
+// ω_max² of the free (unsupported) level: the largest eigenvalue of M^-1/2 K M^-1/2.
+inline double omega_max_squared(const LevelModel& m, bool damping = false) {
+  const int n = m.num_points();
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  const auto& blocks = damping ? m.D : m.K;
+  for (int i = 0; i < n; ++i)
+    for (int e = m.adj.nbr_start[i]; e < m.adj.nbr_start[i + 1]; ++e) {
+      const int j = m.adj.nbr[e];
+      K.block<3, 3>(3 * i, 3 * j) += blocks[e];
+      K.block<3, 3>(3 * i, 3 * i) -= blocks[e];
+    }
+  for (int i = 0; i < 3 * n; ++i)
+    for (int j = 0; j < 3 * n; ++j) K(i, j) /= std::sqrt(m.mass[i / 3] * m.mass[j / 3]);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(K, Eigen::EigenvaluesOnly);
+  return es.eigenvalues().maxCoeff();
+}
+
+}  // namespace mrsim::test_support
