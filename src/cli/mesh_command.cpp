@@ -67,6 +67,10 @@ void print_level(const LevelRecord& r, std::size_t k) {
                 q.max_dihedral_deg, q.mean_radius_ratio,
                 r.level.simplified_surface ? ", simplified surface (gmsh could not remesh it)" : "", r.seconds);
   info(line);
+  if (!r.level.within_tolerance)
+    warn("L" + std::to_string(k) + ": no mesh within +-20% of " + std::to_string(r.requested_tets) +
+         " tets was found (" + std::to_string(r.level.candidates) + " sizes tried); the closest, " +
+         std::to_string(q.tets) + " tets, is kept");
 }
 
 int run_mesh(const MeshArgs& a) {

@@ -4,8 +4,9 @@
 // (count ~ size^-3), every mesh it makes is a candidate, four more are made just around the
 // best size; then, among the candidates within the tolerance band of the target, the one
 // with the best quality wins (minimum dihedral angle, then mean radius ratio). When no
-// candidate falls in the band (tiny targets, where the count jumps with the size), the
-// closest count wins.
+// candidate falls in the band (tiny targets, where the count jumps with the size and is not
+// monotone in it), a grid of sizes from 0.8 to 1.4 times the best is tried until one does;
+// failing that, the closest count wins.
 #include <cstddef>
 #include <string>
 

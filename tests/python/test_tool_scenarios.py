@@ -113,6 +113,33 @@ def test_liver_probe(binary, source, tmp):
     check(bool(np.all(levels[near] == 3)), "skin near the probe is moved by the finest level")
 
 
+def test_liver_thesis(binary, source, tmp):
+    """Fig. 5.9 on the thesis' own hierarchy (28 / 172 / 1874 tets asked of mrsim mesh) with
+    time levels on, as the thesis ran it: the numbers the README states for it."""
+    out = os.path.join(tmp, "liver_thesis")
+    r = cli.run(binary, "run", os.path.join(source, "scenarios", "liver_thesis.yaml"), "-o", out, "-q")
+    check(r.returncode == 0, "liver_thesis runs (exit %d) %s" % (r.returncode, r.stderr[-300:]))
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    tets = summary["tets"]
+    check(all(abs(n / asked - 1) <= 0.2 for n, asked in zip(tets, (28, 172, 1874))),
+          "levels of %s tets, each within 20 %% of the thesis' 28 / 172 / 1874" % tets)
+    with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
+        active = h5["/frames/active"][:]
+        push = np.argmax(h5["/frames/tool_force"][:, 0, 2])
+        levels = h5["/frames/time_levels"][push]
+        t = h5["/tool/time"][:]
+    fine = active[push, -1]
+    check(fine == 33 and active[:, -1].max() == 44 and active[-1, -1] == 0 and active[-1, 0] == active[0, 0],
+          "finest level active under the probe (%d of %d points at the strongest push, README: "
+          "33, at most 44), back to level 0 at the end" % (fine, summary["points"][-1]))
+    check(np.count_nonzero(levels) >= 3,
+          "particles on %d time levels at the strongest push (%s)" % (np.count_nonzero(levels), levels))
+    peak = summary["peak_tool_force"]
+    check(abs(peak - 1.267) < 0.0005, "peak force on the probe %.4f N (README: 1.267 N)" % peak)
+    rate = 1.0 / np.diff(t)
+    check(rate.min() >= 1000, "force logged at %.0f-%.0f Hz (>= 1 kHz)" % (rate.min(), rate.max()))
+
+
 def test_time_levels_rate(binary, source, tmp):
     """With time levels a frame may have few kicking ticks: the force is still sampled at every
     kicking tick and at least every millisecond."""
@@ -416,6 +443,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         test_shared_points_warning(args.binary, tmp)
         test_liver_probe(args.binary, args.source, tmp)
+        test_liver_thesis(args.binary, args.source, tmp)
         test_time_levels_rate(args.binary, args.source, tmp)
         test_criterion_refines_under_tool(args.binary, args.source, tmp)
         probe = os.path.join(args.source, "scenarios", "liver_probe.yaml")
