@@ -44,4 +44,9 @@ std::vector<PointInertia> star_inertia(const PointAdjacency& adj, const TetEnerg
 /// The largest stable step of a point (s): +inf when it feels no stiffness and no damping.
 double stable_step_of(const PointInertia& p, bool semi_implicit);
 
+/// Newton–Cotes (the two-step midpoint rule) is stable up to dt = 1/ω undamped: this share of
+/// the kick–drift limit 2/ω. With any damping its parasitic root grows at every step size, so
+/// its estimate is the kick–drift one halved, a scale rather than a guarantee.
+inline constexpr double kTwoStepMidpointShare = 0.5;
+
 }  // namespace mrsim

@@ -50,6 +50,7 @@ IntegratorKind integrator(const json& name) {
   if (name == "stoermer_verlet") return IntegratorKind::StoermerVerlet;
   if (name == "semi_implicit") return IntegratorKind::SemiImplicit;
   if (name == "semi_implicit_momentum") return IntegratorKind::SemiImplicitMomentum;
+  if (name == "newton_cotes") return IntegratorKind::NewtonCotes;
   return IntegratorKind::ModifiedEuler;
 }
 

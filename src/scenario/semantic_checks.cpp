@@ -96,6 +96,11 @@ void check_adaptivity(const json& document, std::vector<Issue>& issues) {
                         "must be a power of two with adaptivity.time.enabled (time levels halve "
                         "the step: frame_dt / 2^k), got " + std::to_string(n)});
   }
+  if (document["adaptivity"]["time"]["enabled"].get<bool>() &&
+      time["integrator"].get<std::string>() == "newton_cotes")
+    issues.push_back({"/time/integrator",
+                      "newton_cotes is a two-step scheme: every particle needs the same step, so "
+                      "it does not run with adaptivity.time.enabled (use modified_euler)"});
   const std::size_t levels = document["object"]["levels"].size();
   if (space.contains("max_level") && space["max_level"].get<std::size_t>() >= levels)
     issues.push_back({"/adaptivity/space/max_level",

@@ -91,6 +91,7 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   }
   semi_implicit_ = is_semi_implicit(setup.integrator);
   global_step_ = !setup.time_levels;
+  step_share_ = is_two_step(setup.integrator) ? kTwoStepMidpointShare : 1.0;
   update_inertia();
   stepper_ = std::make_unique<Stepper>(setup.integrator, std::move(blocks),
                                        [this] { after_positions(); }, std::move(gathered));
@@ -517,7 +518,7 @@ void HierarchicalSimulation::update_stable_steps() {
   for (int l = 0; l < L; ++l)
     for (int p : lists_->active(l)) {
       if (!states_[l].free_point[p]) continue;
-      const double dt = stable_step_of(loaded_[l][p], semi_implicit_);
+      const double dt = stable_step_of(loaded_[l][p], semi_implicit_) * step_share_;
       stable_dt_[l][p] = dt;
       if (dt < in_force_.dt) in_force_ = {dt, l, p};
     }

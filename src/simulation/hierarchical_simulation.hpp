@@ -200,6 +200,7 @@ class HierarchicalSimulation {
   bool transfer_ = false;  // energy coupling with more than one level
   bool semi_implicit_ = false;
   bool global_step_ = true;  // no time levels: stable steps calibrated by each level's spectrum
+  double step_share_ = 1.0;  // of the kick-drift stable step (Newton-Cotes: half)
   TaskClock tasks_;
   std::vector<std::vector<PointInertia>> inertia_;  // [level][point], active points
   std::vector<std::vector<PointInertia>> loaded_;   // the same with the tools' contact

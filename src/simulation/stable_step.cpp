@@ -124,6 +124,7 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
       const double dt = stable_step_of(star[l][p], semi);
       if (dt < best.dt) best = {dt, l, p, ""};
     }
+  if (is_two_step(sc.time.integrator)) best.dt *= kTwoStepMidpointShare;
   if (std::isfinite(best.dt))
     best.cause = cause_at(star[best.level][best.point], own(best.level, best.point), semi,
                           models[best.level].min_edge[best.point]);
@@ -140,6 +141,10 @@ Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMes
         << stable.dt << " s, set by " << stable.cause;
   std::ostringstream os;
   os.precision(4);
+  if (is_two_step(sc.time.integrator) && material_law(sc.material).damped())
+    warn("time.integrator newton_cotes with material.damping: unstable at every step size (its "
+         "parasitic solution grows like exp(gamma t / 2) with the damping rate gamma of the "
+         "stiffest mode; docs/integrators.md); set phi = psi = 0 or use modified_euler");
   if (sc.time.courant > 1)
     warn("time.courant " + std::to_string(sc.time.courant) +
          " > 1: steps above the stable step estimate (for stability studies)");

@@ -24,4 +24,21 @@ void drift(PointState& s, IndexSet points, double dt) {
   });
 }
 
+void two_step_midpoint(PointState& s, IndexSet points, double dt, bool first) {
+  parallel_for(points.count, [&](int k) {
+    const int i = points[k];
+    if (!s.free_point[i]) return;
+    const Vec3 u = s.u[i], v = s.v[i];
+    if (first) {
+      s.v[i] += (dt * s.inv_mass[i]) * s.f[i];
+      s.u[i] += dt * s.v[i];
+    } else {
+      s.v[i] = s.v_prev[i] + (2 * dt * s.inv_mass[i]) * s.f[i];
+      s.u[i] = s.u_prev[i] + 2 * dt * v;
+    }
+    s.u_prev[i] = u;
+    s.v_prev[i] = v;
+  });
+}
+
 }  // namespace mrsim

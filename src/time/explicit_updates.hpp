@@ -14,5 +14,9 @@ void kick(PointState& s, const Vec3* force, IndexSet points, double dt);
 void save_forces(const PointState& s, IndexSet points, Vec3* saved);
 /// u += dt · v
 void drift(PointState& s, IndexSet points, double dt);
+/// Newton–Cotes (two-step midpoint): u ← u_prev + 2dt·v, v ← v_prev + 2dt·f/m, and the (u, v)
+/// before the update become u_prev, v_prev. `first`: a modified-Euler step instead (there is no
+/// step before).
+void two_step_midpoint(PointState& s, IndexSet points, double dt, bool first);
 
 }  // namespace mrsim

@@ -15,6 +15,8 @@ struct PointState {
   // Störmer–Verlet only: the force of each point's last step, for its next first half-kick.
   // Kept apart from f because with time levels f is recomputed for other points in between.
   std::vector<Vec3> f_kick;
+  // Newton–Cotes only: displacement and velocity one step back.
+  std::vector<Vec3> u_prev, v_prev;
 
   void resize(int n) {
     u.assign(n, Vec3::Zero());

@@ -10,6 +10,7 @@ const char* integrator_name(Integrator kind) {
     case Integrator::StoermerVerlet: return "stoermer_verlet";
     case Integrator::SemiImplicit: return "semi_implicit";
     case Integrator::SemiImplicitMomentum: return "semi_implicit_momentum";
+    case Integrator::NewtonCotes: return "newton_cotes";
   }
   return "?";
 }
@@ -25,6 +26,10 @@ Stepper::Stepper(Integrator kind, std::vector<IntegrationBlock> blocks, std::fun
     for (std::uint8_t free : b.state->free_point) restore_momentum_ = restore_momentum_ && free;
     momentum_states_.push_back(b.state);
     if (kind_ == Integrator::StoermerVerlet) b.state->f_kick.resize(b.state->size(), Vec3::Zero());
+    if (kind_ == Integrator::NewtonCotes) {
+      b.state->u_prev.resize(b.state->size(), Vec3::Zero());
+      b.state->v_prev.resize(b.state->size(), Vec3::Zero());
+    }
   }
   momentum_parts_.reserve(blocks_.size());
 }
@@ -81,6 +86,18 @@ void Stepper::stoermer_verlet_step(double dt) {
   sync();
 }
 
+// Two-step midpoint (open Newton–Cotes) on the first-order system (u, v), one force evaluation
+// per step: u+ = u- + 2dt v, v+ = v- + 2dt f(u, v)/m. Undamped it is stable up to dt = 1/ω, half
+// the kick–drift limit; with any damping its parasitic root grows (docs/integrators.md). The
+// first step after start() or a change of dt is a modified-Euler step.
+void Stepper::newton_cotes_step(double dt) {
+  evaluate_all();
+  const bool first = previous_dt_ != dt;
+  for (auto& b : blocks_) two_step_midpoint(*b.state, points(b), dt * b.dt_scale, first);
+  previous_dt_ = dt;
+  sync();
+}
+
 void Stepper::keep_forces(PointState& s, IndexSet points) const {
   if (kind_ == Integrator::StoermerVerlet) save_forces(s, points, s.f_kick.data());
 }
@@ -99,6 +116,7 @@ void Stepper::evaluate_all() {
 }
 
 void Stepper::start() {
+  previous_dt_ = 0;
   if (kind_ != Integrator::StoermerVerlet) return;
   evaluate_all();
   for (auto& b : blocks_) keep_forces(*b.state, points(b));
@@ -115,6 +133,9 @@ void Stepper::step(double dt) {
       break;
     case Integrator::StoermerVerlet:
       stoermer_verlet_step(dt);
+      break;
+    case Integrator::NewtonCotes:
+      newton_cotes_step(dt);
       break;
   }
 }

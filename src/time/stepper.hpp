@@ -36,7 +36,8 @@ class Stepper {
           std::function<void()> gathered = {});
 
   /// Must be called once before the first step (Störmer–Verlet needs f at t = 0), and again
-  /// after the point sets changed (a split or merge) for the same reason.
+  /// after the point sets changed (a split or merge) for the same reason. Newton–Cotes then
+  /// takes one modified-Euler step to have a step before (and again when dt changes).
   void start();
   void step(double dt);
   /// The first half of a modified-Euler / semi-implicit step: every force evaluated, every
@@ -58,6 +59,7 @@ class Stepper {
   void evaluate_all();
   void sync() { if (sync_) sync_(); }
   void stoermer_verlet_step(double dt);
+  void newton_cotes_step(double dt);
   /// Störmer–Verlet: the current forces (s.f) of `points` become their next first half-kick.
   void keep_forces(PointState& s, IndexSet points) const;
 
@@ -67,6 +69,7 @@ class Stepper {
   std::function<void()> gathered_;
   std::vector<std::int64_t> evaluations_;
   bool restore_momentum_ = false;  // SemiImplicitMomentum on a body with no fixed point
+  double previous_dt_ = 0;         // Newton–Cotes: the step u_prev, v_prev are from; 0: none
   std::vector<MomentumBlock> momentum_parts_;  // scratch, one per block
   std::vector<PointState*> momentum_states_;
   std::vector<IntegrationBlock> body_;         // restore_momentum_over

@@ -66,6 +66,15 @@ TEST(StableStep, OmittedSubstepsAreThePowerOfTwoThatKeepsTheFinestLevelStable) {
   Scenario si = sc;
   si.time.integrator = Integrator::SemiImplicit;
   EXPECT_EQ(with_stable_substeps(si, {&coarse, &fine}).time.substeps * 2, out.time.substeps);
+  // Newton–Cotes (two-step midpoint): stable to 1/ω, half the kick-drift step; warned when damped.
+  Scenario nc = sc;
+  nc.time.integrator = Integrator::NewtonCotes;
+  EXPECT_EQ(with_stable_substeps(nc, {&coarse, &fine}).time.substeps, 2 * out.time.substeps);
+  nc.material.psi = 1;
+  ::testing::internal::CaptureStderr();
+  with_stable_substeps(nc, {&coarse, &fine});
+  EXPECT_NE(::testing::internal::GetCapturedStderr().find("newton_cotes with material.damping"),
+            std::string::npos);
   // Given substeps are kept as they are.
   Scenario given = sc;
   given.time.substeps = 7;

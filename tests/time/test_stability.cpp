@@ -112,8 +112,8 @@ TEST(Stability, LargestStableStepOfEachIntegrator) {
   const TetMesh mesh = make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.02, 0.02), 10, 2, 2);
   const LevelModel m = beam_model(mesh);
   const double dt_crit = 2 / omega_max(m);
-  auto largest = [&](Integrator kind, bool clamped) {
-    double lo = 0.5, hi = 8.0;  // stable at lo, unstable at hi
+  auto largest = [&](Integrator kind, bool clamped, double lo = 0.5) {
+    double hi = 8.0;  // stable at lo, unstable at hi
     while (hi - lo > 0.05) {
       const double mid = 0.5 * (lo + hi);
       (growth(m, kind, mid * dt_crit, 4000, clamped) < 10 ? lo : hi) = mid;
@@ -124,13 +124,53 @@ TEST(Stability, LargestStableStepOfEachIntegrator) {
   const double sv = largest(Integrator::StoermerVerlet, true);
   const double si = largest(Integrator::SemiImplicit, true);
   const double sm = largest(Integrator::SemiImplicitMomentum, false);
+  const double nc = largest(Integrator::NewtonCotes, true, 0.1);
   std::printf("largest stable dt / dt_crit (dt_crit %.4e s): modified_euler %.2f, stoermer_verlet "
-              "%.2f, semi_implicit %.2f, semi_implicit_momentum (free) %.2f\n",
-              dt_crit, me, sv, si, sm);
+              "%.2f, semi_implicit %.2f, semi_implicit_momentum (free) %.2f, newton_cotes %.2f\n",
+              dt_crit, me, sv, si, sm, nc);
   EXPECT_NEAR(me, 1.0, 0.1);
   EXPECT_NEAR(sv, 1.0, 0.1);
   EXPECT_GE(si, 2.0);  // the thesis: the semi-implicit step doubles the usable step
   EXPECT_GE(sm, 2.0);
+  EXPECT_NEAR(nc, 0.5, 0.06);  // the two-step midpoint rule: 1/ω, half the kick-drift limit
+}
+
+TEST(Stability, NewtonCotesGrowsWithAnyDampingAndKeepsMomentum) {
+  // The thesis (§4.3): Newton–Cotes is "much less stable". Read as the two-step midpoint rule,
+  // its parasitic root is about -(1 + dt γ/2) for a mode damped at rate γ: with strain-rate
+  // damping it grows at a quarter of the undamped limit, where modified Euler decays.
+  const TetMesh mesh = make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.02, 0.02), 10, 2, 2);
+  MaterialLaw law = beam_model(mesh).law;
+  const double dt_crit = 2 / omega_max(beam_model(mesh));
+  law.psi = 1.0;  // Pa·s: ζ of the stiffest mode about 0.1
+  const LevelModel damped = build_level_model(mesh, law);
+  EXPECT_LT(growth(damped, Integrator::ModifiedEuler, 0.25 * dt_crit, 4000), 1.0);
+  const double nc = growth(damped, Integrator::NewtonCotes, 0.25 * dt_crit, 4000);
+  EXPECT_FALSE(nc < 1e3) << nc;
+  std::printf("psi = 1 Pa.s, dt = dt_crit / 4, 4000 steps: energy x %.3g with newton_cotes\n", nc);
+  // Momentum: v+ = v- + 2dt f/m and Σ f = 0, so Σ m v keeps its value (free body, undamped).
+  const LevelModel m = beam_model(mesh);
+  PointState s;
+  s.resize(m.num_points());
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> d(-1, 1);
+  Vec3 p0 = Vec3::Zero();
+  for (int i = 0; i < s.size(); ++i) {
+    s.inv_mass[i] = 1 / m.mass[i];
+    s.v[i] = Vec3(d(rng), d(rng), d(rng));
+    p0 += m.mass[i] * s.v[i];
+  }
+  ElasticOnly forces(m);
+  std::vector<IntegrationBlock> blocks(1);
+  blocks[0].state = &s;
+  blocks[0].forces = &forces;
+  Stepper integ(Integrator::NewtonCotes, std::move(blocks));
+  integ.start();
+  for (int k = 0; k < 500; ++k) integ.step(0.4 * dt_crit);
+  Vec3 p = Vec3::Zero();
+  for (int i = 0; i < s.size(); ++i) p += m.mass[i] * s.v[i];
+  EXPECT_LT((p - p0).norm(), 1e-12 * p0.norm() + 1e-15);
+  EXPECT_EQ(integ.force_evaluations(0), 500 * m.num_points());  // one evaluation per step
 }
 
 TEST(Stability, MomentumRestoringSemiImplicitKeepsTheMotionOfAFreeBody) {
