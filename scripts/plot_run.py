@@ -78,7 +78,7 @@ def scenario(log):
 
 
 def frame_dt(resolved, steps):
-    """frame_dt, to label time levels as dt/2^k; without a readable scenario, the coarsest
+    """frame_dt, to label time levels as frame_dt/2^k; without a readable scenario, the coarsest
     time level's step (= frame_dt with time levels)."""
     try:
         value = float(resolved["time"]["frame_dt"])
@@ -204,14 +204,14 @@ def plot_points_per_level(run):
 
 
 def step_label(step, dt):
-    """'dt/4 = 1.25e-4 s': the column's step as a fraction of frame_dt, and in seconds."""
+    """'frame_dt/4 = 1.25e-4 s': the column's step as a fraction of frame_dt, and in seconds."""
     seconds = "%.3g s" % step
     if not dt:
         return seconds
     ratio = dt / step
     if abs(ratio - round(ratio)) > 1e-6 * ratio:
         return seconds
-    return ("dt = " if round(ratio) == 1 else "dt/%d = " % round(ratio)) + seconds
+    return ("frame_dt = " if round(ratio) == 1 else "frame_dt/%d = " % round(ratio)) + seconds
 
 
 def plot_time_levels(run):

@@ -172,6 +172,21 @@ def mark_failed(ax, rows, xs):
                 transform=trans, clip_on=False, label="failed")
 
 
+# Units of the parameters a sweep varies, by the last part of their key (the schema's
+# descriptions give the same); a key not listed is labelled without one.
+UNITS = {"lambda": "Pa", "mu": "Pa", "youngs_modulus": "Pa", "phi": "Pa·s", "psi": "Pa·s",
+         "density": "kg/m³", "poisson_ratio": "dimensionless", "frame_dt": "s", "duration": "s",
+         "radius": "m", "half_length": "m", "stiffness": "N/m", "refine_above": "dimensionless",
+         "coarsen_below": "dimensionless", "courant": "dimensionless", "substeps": "steps per frame",
+         "velocity_change": "dimensionless", "fraction": "dimensionless"}
+
+
+def axis_label(key):
+    """'material.lambda (Pa)'."""
+    unit = UNITS.get(key.split(".")[-1])
+    return "%s (%s)" % (key, unit) if unit else key
+
+
 def plot_param(rows, params, figures, key):
     """The figure for one parameter: a grid of small plots, one per figure column."""
     values, numeric = param_values(rows, key)
@@ -185,7 +200,7 @@ def plot_param(rows, params, figures, key):
         mark_failed(ax, rows, xs)
         set_x_scale(ax, xs, categories)
         ax.set_title(label, fontsize=10)
-        ax.set_xlabel(key, fontsize=9)
+        ax.set_xlabel(axis_label(key), fontsize=9)
         ax.tick_params(labelsize=8)
         ax.grid(alpha=0.3)
     for ax in list(axes.flat)[len(figures):]:

@@ -184,7 +184,7 @@ def test_time_shares(pr, liver):
 
 
 def test_time_levels(pr, beam):
-    """Columns are labelled by their step (dt/2^k), the unused ones left out, and the stack
+    """Columns are labelled by their step (frame_dt/2^k), the unused ones left out, and the stack
     reaches the number of integrated particles."""
     run = pr.read_run(os.path.join(beam, "log.h5"))
     with h5py.File(os.path.join(beam, "log.h5"), "r") as log:
@@ -192,7 +192,7 @@ def test_time_levels(pr, beam):
     ax = pr.plot_time_levels(run).axes[0]
     labels = [t.get_text() for t in ax.get_legend().get_texts()]
     used = [k for k in range(counts.shape[1]) if counts[:, k].any()]
-    expected = ["dt/%d = %.3g s" % (round(0.02 / steps[k]), steps[k]) for k in used]
+    expected = ["frame_dt/%d = %.3g s" % (round(0.02 / steps[k]), steps[k]) for k in used]
     check(len(steps) > 2 and labels == expected,
           "time_levels: %d columns, used ones labelled %s" % (len(steps), labels))
     top = max(p.vertices[:, 1].max() for c in ax.collections for p in c.get_paths())
@@ -269,6 +269,9 @@ def test_sweep_fixture(source, ps, tmp):
     axes = {ax.get_title(): ax for ax in fig.axes if ax.get_visible()}
     check("peak tool force (N)" in axes and "final active points, level 3" in axes
           and len(axes) == 8, "lambda figure: 8 plots %s" % sorted(axes))
+    check({ax.get_xlabel() for ax in axes.values()} == {"material.lambda (Pa)"}
+          and ps.axis_label("material.damping.psi") == "material.damping.psi (Pa·s)",
+          "x axes carry the parameter's unit: %s" % {ax.get_xlabel() for ax in axes.values()})
     lines = lines_by_label(axes["max displacement (m)"])
     for psi in ("2", "20"):
         done = sorted((float(r["param:material.lambda"]), float(r["max_displacement"]))

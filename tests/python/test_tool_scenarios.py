@@ -78,16 +78,16 @@ def test_liver_probe(binary, source, tmp):
           np.array_equal(frame_force[1:, 0, :], force[at_frames]),
           "/frames/tool_force is the force at each frame's last step")
     peak = np.linalg.norm(force, axis=1).max()
-    check(abs(summary["peak_tool_force"] - peak) <= 1e-12 * peak and peak > 0.5,
-          "summary peak_tool_force = max |/tool/force| = %.3f N" % peak)
+    check(abs(summary["peak_tool_force"] - peak) <= 1e-12 * peak and round(peak, 2) == 1.77,
+          "summary peak_tool_force = max |/tool/force| = %.3f N (README: 1.77 N)" % peak)
     touching = contacts > 0
     check(bool(np.all(force[~touching] == 0)) and bool(np.all(force[touching, 2] > 0)),
           "the force is zero without contact and pushes the probe up while touching")
     fine = active[:, -1]
     pressed = np.argmax(frame_force[:, 0, 2])
-    check(fine[pressed] > 0 and fine[-1] == 0 and active[-1, 0] == active[0, 0],
-          "finest level active under the probe (%d points at the strongest push), back to "
-          "level 0 at the end" % fine[pressed])
+    check(fine[pressed] == 557 and fine[-1] == 0 and active[-1, 0] == active[0, 0],
+          "finest level active under the probe (%d points at the strongest push, README: 557), "
+          "back to level 0 at the end" % fine[pressed])
     vtm = os.path.join(out, "frames", "frame_%06d.vtm" % pressed)
     b = blocks(vtm)
     check("surface" in b and "tool" in b, "frame %d has the surface and tool blocks" % pressed)
@@ -345,6 +345,11 @@ def test_volume_lambda(binary, source, tmp):
     forces = [changes[t][2] for t in ("0", "5e4", "5e5")]
     check(forces[0] < forces[1] < forces[2], "the stiffer in volume, the harder the probe pushes: %s N"
           % ["%.3f" % f for f in forces])
+    readme = {"0": ("−15.4", "2.18"), "5e4": ("−6.12", "2.86"), "5e5": ("−4.86", "5.15")}
+    for tag, (dv, v0, f) in changes.items():
+        ours = ("%.3g" % (dv * 1e6)).replace("-", "−"), "%.2f" % f
+        check(ours == readme[tag], "volume_lambda_%s: the README's table says %s cm^3 and %s N, "
+              "the run %s cm^3 and %s N" % ((tag,) + readme[tag] + ours))
 
 
 def test_little_man(binary, source, tmp):
@@ -376,6 +381,11 @@ def test_little_man(binary, source, tmp):
           "%d zero crossings in %.2f s" % (np.abs(swing).max() * 1e3, crossings, t[-1] - 1.45))
     check(np.abs(tips).max() > 2e-3, "the arms move by more than 2 mm while shaken (%.1f mm)"
           % (np.abs(tips).max() * 1e3))
+    stated = ("14.2", "14.4", 5, "2.26", "2.01")  # README's Fig. 5.10 row
+    measured = ("%.1f" % (np.abs(tips).max() * 1e3), "%.1f" % (np.abs(swing).max() * 1e3),
+                crossings, "%.2f" % -f0[:, 1].min(), "%.2f" % f1[:, 1].max())
+    check(measured == stated, "little_man_shake: README says arms up to %s mm, %s mm after "
+          "release, %d crossings, %s and %s N; the run gives %s" % (stated + (measured,)))
     check(crossings >= 2 and np.abs(swing).max() > 2e-4,
           "the arms keep oscillating after the tools let go")
 
