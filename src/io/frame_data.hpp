@@ -25,6 +25,12 @@ struct LevelFrameView {
   std::span<const std::int32_t> time_level; // column of /frames/time_levels, -1: not integrated
   std::span<const double> criterion;        // h |Δu| (method.md §3.3)
   std::span<const double> mass;             // kg, lumped
+  // Per tet: the share of its volume this level simulates, 0–1 (hierarchy/level_ownership.hpp).
+  // Written as the cell array `simulated` when given (one value per tet); empty: not written.
+  std::span<const double> simulated = {};
+  // Per tet: the level that simulates most of it (cell array `simulated_by`; on the finest level
+  // block, coloured by it, the object shows once, each part by its level). Empty: not written.
+  std::span<const std::int8_t> simulated_by = {};
 };
 
 /// The object's skin (the VTU `surface` block): a triangle surface moved by the levels.

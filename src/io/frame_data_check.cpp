@@ -42,6 +42,10 @@ void check_level_view(const LevelFrameView& view, int level) {
   check_size(view.time_level.size(), n, where, "time_level");
   check_size(view.criterion.size(), n, where, "criterion");
   check_size(view.mass.size(), n, where, "mass");
+  if (!view.simulated.empty())
+    check_size(view.simulated.size(), view.mesh->tets.size(), where, "simulated");
+  if (!view.simulated_by.empty())
+    check_size(view.simulated_by.size(), view.mesh->tets.size(), where, "simulated_by");
 }
 
 void check_surface_view(const SurfaceFrameView& surface) {

@@ -1,5 +1,6 @@
 #include "io/vtk_level_grid.hpp"
 
+#include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>
 #include <vtkIntArray.h>
@@ -42,6 +43,13 @@ vtkSmartPointer<vtkUnstructuredGrid> make_level_grid(const LevelFrameView& view,
   grid->SetPoints(deformed_points(view));
   grid->SetCells(VTK_TETRA, tetra_cells(*view.mesh));
   add_point_arrays(grid->GetPointData(), view);
+  // What the level simulates of each tet: a Threshold `simulated` >= 0.5 on every level block
+  // shows the object once, each part on its level (docs/output.md "ParaView").
+  if (!view.simulated.empty())
+    grid->GetCellData()->AddArray(scalar_array<vtkDoubleArray>("simulated", view.simulated));
+  if (!view.simulated_by.empty())
+    grid->GetCellData()->AddArray(
+        scalar_array<vtkSignedCharArray>("simulated_by", view.simulated_by));
   add_time_value(grid->GetFieldData(), time);
   return grid;
 }

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/interruption.hpp"
 #include "core/log.hpp"
+#include "hierarchy/level_ownership.hpp"
 #include "io/hdf5_log.hpp"
 #include "io/run_folder.hpp"
 #include "io/summary_json.hpp"
@@ -97,6 +98,8 @@ class FrameWriter {
     status_.resize(L_);
     force_.resize(L_);
     time_level_.resize(L_);
+    simulated_.resize(L_);
+    simulated_by_.resize(L_);
     std::vector<const TetMesh*> meshes;
     for (int l = 0; l < L_; ++l) {
       status_[l].assign(sim.model(l).num_points(), 0);
@@ -206,6 +209,12 @@ class FrameWriter {
       if (sim_.state(l).free_point[p]) time_level_[l][p] = ta ? ta->level_of(l, p) : 0;
   }
 
+  // Per tet of level l: the share of it level l simulates (hierarchy/level_ownership.hpp).
+  void fill_simulated(int l) {
+    if (!ownership_) ownership_ = std::make_unique<LevelOwnership>(sim_.hierarchy());
+    ownership_->shares(sim_.hierarchy(), l, simulated_[l], simulated_by_[l]);
+  }
+
   void write_vtk(int frame, double time) {
     sim_.fill_inactive();  // every level shows the whole deformed object
     std::vector<LevelFrameView> views(L_);
@@ -223,6 +232,9 @@ class FrameWriter {
       v.time_level = time_level_[l];
       v.criterion = adapt_.criterion(l);
       v.mass = sim_.model(l).mass;
+      fill_simulated(l);
+      v.simulated = simulated_[l];
+      v.simulated_by = simulated_by_[l];
     }
     if (const SkinContact* c = sim_.contact()) {
       sim_.skin_state(skin_u_, skin_v_);
@@ -252,6 +264,9 @@ class FrameWriter {
   std::vector<std::vector<std::int8_t>> status_;
   std::vector<std::vector<Vec3>> force_;
   std::vector<std::vector<std::int32_t>> time_level_;
+  std::vector<std::vector<double>> simulated_;         // per tet (fill_simulated)
+  std::vector<std::vector<std::int8_t>> simulated_by_;  // per tet (fill_simulated)
+  std::unique_ptr<LevelOwnership> ownership_;   // built at the first VTK frame
   std::unique_ptr<Hdf5Log> log_;
   std::unique_ptr<VtkSeriesWriter> vtk_;
   TaskClock::Parts run_parts_{};

@@ -1,0 +1,107 @@
+#include "hierarchy/level_ownership.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "hierarchy/tet_locator.hpp"
+
+namespace mrsim {
+
+namespace {
+
+double tet_volume(const TetMesh& m, const Tet& t) {
+  const Vec3 a = m.points[t[0]];
+  return std::abs((m.points[t[1]] - a).dot((m.points[t[2]] - a).cross(m.points[t[3]] - a))) / 6;
+}
+
+// A uniform number in (0, 1) from a 64-bit key (splitmix64): the samples depend on the level,
+// tet and sample index only, never on the run.
+double uniform(std::uint64_t key) {
+  key += 0x9e3779b97f4a7c15ULL;
+  key = (key ^ (key >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  key = (key ^ (key >> 27)) * 0x94d049bb133111ebULL;
+  key ^= key >> 31;
+  return (static_cast<double>(key >> 11) + 0.5) / 9007199254740992.0;
+}
+
+// Barycentric weights of a point uniform in a tet: normalised exponentials (Dirichlet(1,1,1,1)).
+std::array<double, 4> uniform_bary(std::uint64_t key) {
+  std::array<double, 4> w{};
+  double sum = 0;
+  for (int a = 0; a < 4; ++a) sum += w[a] = -std::log(uniform(4 * key + a));
+  for (double& x : w) x /= sum;
+  return w;
+}
+
+// The tet of a level holding x, or -1 when x is outside that level's mesh: independent meshes
+// of one object do not share their boundary, and a level claims only what its tets cover.
+std::int32_t inside_tet(const TetLocator& locator, const Vec3& x) {
+  const TetLocation at = locator.locate(x);
+  return at.inside() ? at.tet : -1;
+}
+
+double mean_tet_volume(const TetMesh& m) {
+  double v = 0;
+  for (const Tet& t : m.tets) v += tet_volume(m, t);
+  return v / std::max<std::size_t>(1, m.tets.size());
+}
+
+}  // namespace
+
+LevelOwnership::LevelOwnership(const Hierarchy& h)
+    : levels_(h.num_levels()), start_(levels_), where_(levels_) {
+  std::vector<TetLocator> locators;
+  for (int m = 0; m < levels_; ++m) locators.emplace_back(*h.level(m).mesh);
+  const double unit = mean_tet_volume(*h.level(levels_ - 1).mesh);
+  for (int l = 0; l < levels_; ++l) {
+    const TetMesh& mesh = *h.level(l).mesh;
+    start_[l].assign(mesh.tets.size() + 1, 0);
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      const double n = std::round(tet_volume(mesh, mesh.tets[t]) / unit);
+      start_[l][t + 1] = start_[l][t] + static_cast<std::int32_t>(std::clamp(n, 1.0, 4096.0));
+    }
+    where_[l].resize(static_cast<std::size_t>(start_[l].back()) * levels_);
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+      for (std::int32_t s = start_[l][t]; s < start_[l][t + 1]; ++s) {
+        const auto w = uniform_bary((static_cast<std::uint64_t>(l) << 40) + s);
+        Vec3 x = Vec3::Zero();
+        for (int a = 0; a < 4; ++a) x += w[a] * mesh.points[mesh.tets[t][a]];
+        std::int32_t* at = &where_[l][static_cast<std::size_t>(s) * levels_];
+        for (int m = 0; m < levels_; ++m)
+          at[m] = m == l ? static_cast<std::int32_t>(t) : inside_tet(locators[m], x);
+      }
+  }
+}
+
+// A finer level claims x only inside its own mesh; level 0 takes the rest.
+int LevelOwnership::owner(const Hierarchy& h, const std::int32_t* at) const {
+  for (int m = levels_ - 1; m > 0; --m) {
+    if (at[m] < 0) continue;
+    const Tet& t = h.level(m).mesh->tets[at[m]];
+    bool covered = true;
+    for (int a = 0; a < 4; ++a) covered = covered && h.state(m, t[a]) != NodeState::Inactive;
+    if (covered) return m;
+  }
+  return 0;
+}
+
+void LevelOwnership::shares(const Hierarchy& h, int level, std::vector<double>& share,
+                            std::vector<std::int8_t>& owner_level) const {
+  const std::size_t tets = start_[level].size() - 1;
+  share.resize(tets);
+  owner_level.resize(tets);
+  std::vector<int> count(levels_);
+  for (std::size_t t = 0; t < tets; ++t) {
+    std::fill(count.begin(), count.end(), 0);
+    for (std::int32_t s = start_[level][t]; s < start_[level][t + 1]; ++s)
+      ++count[owner(h, &where_[level][static_cast<std::size_t>(s) * levels_])];
+    share[t] = static_cast<double>(count[level]) / (start_[level][t + 1] - start_[level][t]);
+    // max_element: the first of equal counts, the coarser level.
+    owner_level[t] =
+        static_cast<std::int8_t>(std::max_element(count.begin(), count.end()) - count.begin());
+  }
+}
+
+}  // namespace mrsim
