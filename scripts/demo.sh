@@ -21,9 +21,11 @@ while it pushes and is handed back to the coarsest after the release. Outputs in
                               under the probe, then falls back to level 0
   plots/tool_force.png        the force on the probe at every kicking step (1.6-3.2 kHz)
   plots/time_levels.png       particles per time level: each one steps frame_dt / 2^k
-  frames.pvd                  open in ParaView (File > Open), press Play; in the Pipeline
-                              Browser show the 'surface' block coloured by 'level' (which mesh
-                              moves each skin vertex) and the 'tool' block
+  frames.pvd                  open in ParaView (File > Open), press Play; colour the finest
+                              block (level_2) by its cell array 'simulated_by': the liver once,
+                              each part in the colour of the mesh that simulates it. Or, from
+                              this folder: paraview --state=scripts/paraview_levels.pvsm
+                              (README "ParaView": getting ParaView's Python on Debian)
   log.h5, summary.json        everything measured (docs/output.md)
 Next: scripts/test.sh runs the whole test suite; README.md lists every scenario.
 MSG
