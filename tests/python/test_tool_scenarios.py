@@ -362,6 +362,7 @@ def test_little_man(binary, source, tmp):
         names = [h5[g].attrs["name"] for g in ("/tool", "/tool_1")]
         f0 = h5["/tool/force"][:]
         f1 = h5["/tool_1/force"][:]
+        finest_share = h5["/frames/active"][:, -1].mean() / 4410
     names = [n.decode() if isinstance(n, bytes) else str(n) for n in names]
     check(names == ["front", "back"], "two tools logged as /tool and /tool_1: %s" % names)
     check(f0[:, 1].min() < -0.1 and f1[:, 1].max() > 0.1,
@@ -386,6 +387,8 @@ def test_little_man(binary, source, tmp):
                 crossings, "%.2f" % -f0[:, 1].min(), "%.2f" % f1[:, 1].max())
     check(measured == stated, "little_man_shake: README says arms up to %s mm, %s mm after "
           "release, %d crossings, %s and %s N; the run gives %s" % (stated + (measured,)))
+    check(round(100 * finest_share) == 67, "little_man_shake: %.1f %% of the finest points active "
+          "on average (README: 67 %%)" % (100 * finest_share))
     check(crossings >= 2 and np.abs(swing).max() > 2e-4,
           "the arms keep oscillating after the tools let go")
 
