@@ -1,9 +1,11 @@
 #include "io/vtk_error_capture.hpp"
 
 #include <vtkCommand.h>
+#include <vtkErrorCode.h>
 #include <vtkOutputWindow.h>
 
 #include <algorithm>
+#include <cstring>
 #include <regex>
 
 namespace mrsim {
@@ -65,6 +67,18 @@ void VtkErrorCapture::on_error(vtkObject*, unsigned long, void* self, void* text
   // Each block's writer repeats the same failure: report it once.
   if (std::find(messages.begin(), messages.end(), message) == messages.end()) {
     messages.push_back(message);
+  }
+}
+
+std::string vtk_error_code_text(unsigned long code) {
+  if (code > 0 && code < vtkErrorCode::FirstVTKErrorCode)
+    return std::string(std::strerror(static_cast<int>(code))) + " (errno " +
+           std::to_string(code) + ")";
+  switch (code) {
+    case vtkErrorCode::CannotOpenFileError: return "cannot open the file";
+    case vtkErrorCode::OutOfDiskSpaceError: return "out of disk space";
+    case vtkErrorCode::NoFileNameError: return "no file name";
+    default: return "VTK error code " + std::to_string(code);
   }
 }
 

@@ -13,6 +13,11 @@
 
 namespace mrsim {
 
+/// A writer's error code in words: codes below vtkErrorCode::FirstVTKErrorCode are the system's
+/// errno ("No space left on device (errno 28)"), the others VTK's own (vtkErrorCode's text
+/// lives in CommonMisc, which mrsim does not link).
+std::string vtk_error_code_text(unsigned long code);
+
 class VtkErrorCapture {
  public:
   VtkErrorCapture();

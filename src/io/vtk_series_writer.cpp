@@ -79,8 +79,7 @@ void write_vtm(const std::filesystem::path& file, vtkMultiBlockDataSet* blocks) 
   // any captured error counts as a failure too.
   if (ok != 1 || writer->GetErrorCode() != vtkErrorCode::NoError || errors.any()) {
     std::string reason = errors.summary();
-    // (vtkErrorCode's own text lives in CommonMisc, which mrsim does not link: give the number.)
-    if (reason.empty()) reason = "VTK error code " + std::to_string(writer->GetErrorCode());
+    if (reason.empty()) reason = vtk_error_code_text(writer->GetErrorCode());
     throw RunError("cannot write " + file.string() + ": " + reason);
   }
 }

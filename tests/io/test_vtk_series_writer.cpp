@@ -20,8 +20,10 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <vtkErrorCode.h>
 
 #include "core/error.hpp"
+#include "io/vtk_error_capture.hpp"
 #include "io/vtk_series_writer.hpp"
 #include "vtk_read_checks.hpp"
 #include "sample_frames.hpp"
@@ -170,6 +172,15 @@ TEST(VtkSeriesWriter, PvdIsValidAfterEveryFrame) {
     EXPECT_EQ(attribute_values(pvd, "timestep").size(), static_cast<std::size_t>(f + 1));
     EXPECT_NE(pvd.find("</VTKFile>"), std::string::npos);
   }
+}
+
+TEST(VtkErrorCodeText, SystemCodesInTheSystemsWordsVtkCodesInOurs) {
+  // Issue 18 defect 2: a full disk during a frame said "VTK error code 28".
+  EXPECT_EQ(vtk_error_code_text(28), "No space left on device (errno 28)");
+  EXPECT_EQ(vtk_error_code_text(27), "File too large (errno 27)");
+  EXPECT_EQ(vtk_error_code_text(vtkErrorCode::OutOfDiskSpaceError), "out of disk space");
+  EXPECT_EQ(vtk_error_code_text(vtkErrorCode::UserError + 5),
+            "VTK error code " + std::to_string(vtkErrorCode::UserError + 5));
 }
 
 TEST(VtkSeriesWriter, UnusableOutputFolderThrowsRunErrorNamingIt) {
