@@ -12,8 +12,7 @@ namespace mrsim {
 namespace {
 
 double tet_volume(const TetMesh& m, const Tet& t) {
-  const Vec3 a = m.points[t[0]];
-  return std::abs((m.points[t[1]] - a).dot((m.points[t[2]] - a).cross(m.points[t[3]] - a))) / 6;
+  return std::abs(signed_volume(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]));
 }
 
 // A uniform number in (0, 1) from a 64-bit key (splitmix64): the samples depend on the level,

@@ -14,35 +14,29 @@ import tempfile
 
 import numpy as np
 from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import (vtkCellLocator, vtkCompositeDataSet,
-                                           vtkDataObject, vtkGenericCell, vtkUnstructuredGrid)
+from vtkmodules.vtkCommonDataModel import (vtkCellLocator, vtkDataObject, vtkGenericCell,
+                                           vtkUnstructuredGrid)
 from vtkmodules.vtkFiltersCore import vtkThreshold
 from vtkmodules.vtkIOImage import vtkPNGReader
-from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import test_cli_run as cli  # noqa: E402  (shared helpers: run, check)
+import test_tool_scenarios as tool_scenarios  # noqa: E402  (blocks, tet_volume, level_tets)
 
 check = cli.check
 
 
 def read_blocks(vtm):
-    reader = vtkXMLMultiBlockDataReader()
-    reader.SetFileName(vtm)
-    reader.Update()
-    mb = reader.GetOutput()
-    return {mb.GetMetaData(b).Get(vtkCompositeDataSet.NAME()): mb.GetBlock(b)
-            for b in range(mb.GetNumberOfBlocks())}
+    """{block name: grid}."""
+    return {name: grid for name, (_, _, grid) in tool_scenarios.blocks(vtm).items()}
 
 
 def volume(grid):
-    pts = vtk_to_numpy(grid.GetPoints().GetData()) if grid.GetNumberOfPoints() else np.zeros((0, 3))
     if grid.GetNumberOfCells() == 0:
         return 0.0
-    tets = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 4)
-    a, b, c, d = (pts[tets[:, k]] for k in range(4))
-    return float(np.einsum("ij,ij->i", b - a, np.cross(c - a, d - a)).sum() / 6)
+    return float(tool_scenarios.tet_volume(vtk_to_numpy(grid.GetPoints().GetData()),
+                                           tool_scenarios.level_tets(grid)).sum())
 
 
 def threshold(grid, array, lo, hi):
