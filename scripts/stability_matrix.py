@@ -46,9 +46,18 @@ BAND = (1.0, 2.5)       # explicit, one global step: true limit / estimate
 TIME_LEVEL_BAND = (1.0, 5.0)  # time levels: the step is the estimate rounded to a power of two
 
 
-def band(row):
-    if row["integrator"].startswith("semi_implicit"):
-        return (1.0, math.inf)
+SHORT_RUN_SEMI_BAND = (1.0, 4.0)
+
+
+def band(row, short_runs=False):
+    """The same for every integrator: the semi-implicit estimate is the filter's own limit
+    (docs/integrators.md), no longer the explicit one doubled. With --quick's short runs the
+    body hardly deforms, so the semi-implicit estimate's Green-Lagrange allowance (0.2 lambda_K
+    on the filtered spectrum, measured on volume_lambda_5e5's indentation) is not used yet
+    there: the adaptive beam's global semi-implicit step is then 4.0 below its limit in 0.1 s,
+    2.0 over the whole run."""
+    if short_runs and row["integrator"].startswith("semi_implicit") and not row["time_levels"]:
+        return SHORT_RUN_SEMI_BAND
     return TIME_LEVEL_BAND if row["time_levels"] else BAND
 INTEGRATORS = ["modified_euler", "stoermer_verlet", "semi_implicit"]
 ESTIMATE = re.compile(r"stable step estimate ([0-9.eE+-]+) s")
@@ -57,7 +66,7 @@ COMPUTED = re.compile(r"time\.substeps computed: (\d+)")
 
 def bundled_cases():
     names = ["beam", "beam_adaptive", "liver_press", "liver_probe", "little_man_shake",
-             "volume_lambda_0", "volume_lambda_5e4", "volume_lambda_5e5"]
+             "volume_lambda_0", "volume_lambda_5e4", "volume_lambda_5e5", "liver_thesis"]
     return {n: {"scenario": SCENARIOS / (n + ".yaml"), "finest": None} for n in names}
 
 
@@ -200,7 +209,8 @@ def largest_stable_courant(binary, scenario, sets, out, reference, top=8.0):
     return lo
 
 
-def measure(binary, work, name, scenario, frame_dt, integrator, psi, time_levels):
+def measure(binary, work, name, scenario, frame_dt, integrator, psi, time_levels,
+            short_runs=False):
     sets = settings(integrator, psi, time_levels)
     out = work / "run"
     checked, _ = mrsim(binary, "check", scenario, sets)
@@ -232,7 +242,7 @@ def measure(binary, work, name, scenario, frame_dt, integrator, psi, time_levels
         # whole stars) as well: how cautious one global step chosen in advance is.
         row["ratio"] = frame_dt / n / in_force
         row["setup_ratio"] = frame_dt / n / estimate
-    lo, hi = band(row)
+    lo, hi = band(row, short_runs)
     row["band"] = [lo, hi if math.isfinite(hi) else None]
     row["ok"] = r.returncode == 0 and lo <= row["ratio"] <= hi
     return row
@@ -294,7 +304,7 @@ def main():
             for psi in psis:
                 for time_levels in modes:
                     row = measure(binary, work, name, scenario, frame_dt, integrator, psi,
-                                  time_levels)
+                                  time_levels, args.quick)
                     rows.append(row)
                     print(json.dumps(row), flush=True)
     (work / "stability.json").write_text(json.dumps(rows, indent=1))

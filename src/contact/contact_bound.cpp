@@ -66,7 +66,7 @@ void add_contact_bounds(const SkinPenalty& penalty, const std::vector<int>& vert
       sum.c_peak = std::max(sum.c_peak, shares[j].c_peak);
     }
     PointInertia& p = out[sum.level][sum.point];
-    p.stiffness += std::min(sum.k, sum.k_peak * penalty.area_cap);
+    p.contact_stiffness += std::min(sum.k, sum.k_peak * penalty.area_cap);
     p.damping += std::min(sum.c, sum.c_peak * penalty.area_cap);
     i = j;
   }

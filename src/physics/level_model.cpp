@@ -1,6 +1,7 @@
 #include "physics/level_model.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "physics/lumped_mass.hpp"
@@ -24,28 +25,71 @@ void edge_lengths(LevelModel& m) {
   }
 }
 
+// The damping scale at which the level's smallest point step, its stiffness bounds scaled by
+// `stiffness_scale`, is `target`, never above the damping spectrum's own scale. O(points) per
+// trial.
+double combined_damping_scale(const LevelModel& m, bool semi, double target,
+                              double stiffness_scale) {
+  const double own = m.damping_spectrum.scale;
+  if (!std::isfinite(target)) return own;
+  auto smallest_step = [&](double damping_scale) {
+    double dt = std::numeric_limits<double>::infinity();
+    for (PointInertia p : m.star) {
+      p.stiffness *= stiffness_scale;
+      p.damping *= damping_scale;
+      dt = std::min(dt, stable_step_of(p, semi));
+    }
+    return dt;
+  };
+  if (!(target > smallest_step(own))) return own;
+  if (smallest_step(0.0) <= target) return 0.0;
+  double lo = 0.0, hi = own;  // smallest step above the target at lo, below at hi
+  while (hi - lo > 1e-3 * own) {
+    const double mid = 0.5 * (lo + hi);
+    (smallest_step(mid) > target ? lo : hi) = mid;
+  }
+  return hi;
+}
+
 // The level's spectra against its largest point bounds (physics/spectral_bound.hpp).
-void measure_spectrum(LevelModel& m) {
+void measure_spectrum(LevelModel& m, bool semi_implicit) {
   double k_max = 0, c_max = 0;
   for (const PointInertia& p : m.star)
     if (p.mass > 0) {
       k_max = std::max(k_max, p.stiffness / p.mass);
       c_max = std::max(c_max, p.damping / p.mass);
     }
-  m.stiffness_spectrum =
-      spectral_scale(largest_mass_scaled_eigenvalue(m.adj, m.K, m.mass), k_max);
+  m.stiffness_spectrum = spectral_scale(largest_mass_scaled_eigenvalue(m.adj, m.K, m.mass), k_max);
   m.damping_spectrum = spectral_scale(largest_mass_scaled_eigenvalue(m.adj, m.D, m.mass), c_max);
+  m.step_damping_scale = m.time_level_damping_scale = m.damping_spectrum.scale;
+  if (semi_implicit)
+    m.filter_spectrum = filter_scale(largest_filtered_eigenvalue(m.adj, m.K, m.mass),
+                                     m.stiffness_spectrum.eigenvalue, k_max,
+                                     m.law.strain == StrainMeasure::GreenLagrange);
+  if (m.D.empty() || m.num_points() == 0) return;
+  // The level's combined limit (damping and stiffness modes apart) over √kSpectralMargin.
+  const SpectralScale& k = semi_implicit ? m.filter_spectrum : m.stiffness_spectrum;
+  const double target = combined_step_limit(m.adj, m.K, m.D, m.mass, semi_implicit, k.eigenvalue,
+                                            m.damping_spectrum.eigenvalue) /
+                        std::sqrt(kSpectralMargin);
+  m.step_damping_scale = combined_damping_scale(m, semi_implicit, target, k.scale);
+  m.time_level_damping_scale = combined_damping_scale(m, semi_implicit, target, 1.0);
 }
 
 }  // namespace
 
-PointInertia calibrated(PointInertia p, const LevelModel& m) {
-  p.stiffness *= m.stiffness_spectrum.scale;
-  p.damping *= m.damping_spectrum.scale;
+PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit) {
+  p.stiffness *= semi_implicit ? m.filter_spectrum.scale : m.stiffness_spectrum.scale;
+  p.damping *= m.step_damping_scale;
   return p;
 }
 
-LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law) {
+PointInertia damping_calibrated(PointInertia p, const LevelModel& m) {
+  p.damping *= m.time_level_damping_scale;
+  return p;
+}
+
+LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law, bool semi_implicit) {
   LevelModel m;
   m.mesh = &mesh;
   m.law = law;
@@ -62,7 +106,7 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law) {
   edge_lengths(m);
   m.bounds = tet_energy_bounds(m.geo, law);
   m.star = star_inertia(m.adj, m.bounds, m.mass);
-  measure_spectrum(m);
+  measure_spectrum(m, semi_implicit);
   return m;
 }
 

@@ -17,24 +17,35 @@ struct LevelModel {
   MaterialLaw law;
   TetGeometry geo;
   PointAdjacency adj;
-  std::vector<double> mass;          // kg, lumped
-  std::vector<double> lumped_volume; // V*_i = Σ V_t / 4
-  std::vector<double> mean_edge;     // h_i, mean rest length of the edges at i
-  std::vector<double> min_edge;      // shortest rest edge at i
-  std::vector<Mat3> K;               // λA + μB per CSR entry (used by the Cauchy force)
-  std::vector<Mat3> D;               // φA + ψB per CSR entry (Cauchy damping); empty if undamped
-  std::vector<double> laplacian_w;   // w_ij = -Σ_t V_t ∇N_i·∇N_j per CSR entry (§3.1)
-  TetEnergyBounds bounds;            // energy bounds of each tet (stable step)
+  std::vector<double> mass;           // kg, lumped
+  std::vector<double> lumped_volume;  // V*_i = Σ V_t / 4
+  std::vector<double> mean_edge;      // h_i, mean rest length of the edges at i
+  std::vector<double> min_edge;       // shortest rest edge at i
+  std::vector<Mat3> K;                // λA + μB per CSR entry (used by the Cauchy force)
+  std::vector<Mat3> D;                // φA + ψB per CSR entry (Cauchy damping); empty if undamped
+  std::vector<double> laplacian_w;    // w_ij = -Σ_t V_t ∇N_i·∇N_j per CSR entry (§3.1)
+  TetEnergyBounds bounds;             // energy bounds of each tet (stable step)
   // λ_max(M⁻¹K), λ_max(M⁻¹D) of the level alone and the scales they give its point bounds for
   // one global step (physics/spectral_bound.hpp, calibrated()).
   SpectralScale stiffness_spectrum, damping_spectrum;
-  std::vector<PointInertia> star;    // mass and bounds of each point's whole star
+  // λ_max(M⁻¹(K − 2 blockdiag K)) and the semi-implicit scale (filter_scale()); measured only
+  // for the semi-implicit integrators, else the thesis' rule (scale 1).
+  SpectralScale filter_spectrum;
+  // What calibrated() scales the damping bounds by: damping_spectrum.scale, or less where the
+  // level's combined limit (stiffness and damping together, physics/spectral_bound.hpp
+  // combined_step_limit()) is longer than the two maxima apart say.
+  double step_damping_scale = 1;
+  // The same for time levels, whose stiffness bounds stay the proven ones (damping_calibrated()).
+  double time_level_damping_scale = 1;
+  std::vector<PointInertia> star;  // mass and bounds of each point's whole star
 
   int num_points() const { return adj.num_points(); }
   int num_tets() const { return static_cast<int>(geo.tets.size()); }
 };
 
-LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law);
+/// `semi_implicit`: also measure the filtered spectrum (one more Lanczos run).
+LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law,
+                             bool semi_implicit = false);
 
 /// A point bound of level `m` (its star, or what reaches it in the hierarchy, without contact)
 /// scaled by the level's spectrum, for the one global step: the level alone is then estimated
@@ -42,6 +53,13 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law);
 /// proven local bounds: a uniform scale could make a point whose star bound is tight, next to
 /// one where it is loose, step beyond its own limit (the tiny-tet slab of
 /// tests/simulation/test_time_levels.cpp did).
-PointInertia calibrated(PointInertia p, const LevelModel& m);
+/// `semi_implicit`: the stiffness takes the filtered scale instead (it stands for the stiffness
+/// the filter leaves explicit; it may be negative).
+PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit = false);
+
+/// For time levels: the proven stiffness bound, the damping scaled to the level's combined limit
+/// (time_level_damping_scale). Where damping sets the step, the damping and stiffness modes
+/// apart were 1.6–4.6 times too cautious on the liver.
+PointInertia damping_calibrated(PointInertia p, const LevelModel& m);
 
 }  // namespace mrsim

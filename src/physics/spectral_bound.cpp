@@ -3,21 +3,33 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "physics/stable_step_bound.hpp"
 
 namespace mrsim {
 
 namespace {
 
-// y = M^-1/2 A M^-1/2 x, one gather per point (s = 1/√m, 0 where a point has no mass).
-void apply(const PointAdjacency& adj, const std::vector<Mat3>& edge, const Eigen::VectorXd& s,
+// One term of the operator: coefficient × (A u)_i = Σ_j A_ij (u_j + own u_i). own = -1 gives A,
+// own = +1 gives A − 2 blockdiag(A) (the diagonal block being -Σ_j A_ij).
+struct Term {
+  const std::vector<Mat3>* edge;
+  double own, coefficient;
+};
+
+// y = M^-1/2 (Σ terms) M^-1/2 x, one gather per point (s = 1/√m, 0 where a point has no mass).
+void apply(const PointAdjacency& adj, const std::vector<Term>& terms, const Eigen::VectorXd& s,
            const Eigen::VectorXd& x, Eigen::VectorXd& y) {
   const int n = adj.num_points();
   for (int i = 0; i < n; ++i) {
-    const Vec3 ui = s[i] * x.segment<3>(3 * i);
+    const Vec3 xi = s[i] * x.segment<3>(3 * i);
     Vec3 yi = Vec3::Zero();
-    for (int e = adj.nbr_start[i]; e < adj.nbr_start[i + 1]; ++e) {
-      const int j = adj.nbr[e];
-      yi.noalias() += edge[e] * (s[j] * x.segment<3>(3 * j) - ui);
+    for (const Term& t : terms) {
+      Vec3 sum = Vec3::Zero();
+      for (int e = adj.nbr_start[i]; e < adj.nbr_start[i + 1]; ++e)
+        sum.noalias() += (*t.edge)[e] * (s[adj.nbr[e]] * x.segment<3>(3 * adj.nbr[e]) + t.own * xi);
+      yi += t.coefficient * sum;
     }
     y.segment<3>(3 * i) = s[i] * yi;
   }
@@ -37,13 +49,11 @@ std::pair<double, double> top_ritz(const std::vector<double>& alpha,
   return {es.eigenvalues()[top], std::abs(beta[k - 1] * es.eigenvectors()(k - 1, top))};
 }
 
-}  // namespace
-
-double largest_mass_scaled_eigenvalue(const PointAdjacency& adj, const std::vector<Mat3>& edge,
-                                      const std::vector<double>& mass, double tolerance,
-                                      int max_iterations) {
+// Lanczos for the largest algebraic eigenvalue of M^-1/2 A M^-1/2 (A of apply()), from a fixed
+// start vector; the Ritz value plus its residual bound (errs upwards).
+double lanczos_top(const PointAdjacency& adj, const std::vector<Term>& terms,
+                   const std::vector<double>& mass, double tolerance, int max_iterations) {
   const int n = adj.num_points(), dofs = 3 * n;
-  if (n == 0 || edge.empty()) return 0;
   Eigen::VectorXd s(n);
   for (int i = 0; i < n; ++i) s[i] = mass[i] > 0 ? 1 / std::sqrt(mass[i]) : 0;
   // A fixed start vector with every component non-zero and no symmetry of the mesh.
@@ -53,7 +63,7 @@ double largest_mass_scaled_eigenvalue(const PointAdjacency& adj, const std::vect
   std::vector<double> alpha, beta;
   double estimate = 0;
   for (int it = 0; it < std::min(max_iterations, dofs); ++it) {
-    apply(adj, edge, s, q, w);
+    apply(adj, terms, s, q, w);
     if (it > 0) w -= beta.back() * q_prev;
     alpha.push_back(q.dot(w));
     w -= alpha.back() * q;
@@ -67,12 +77,66 @@ double largest_mass_scaled_eigenvalue(const PointAdjacency& adj, const std::vect
     q_prev.swap(q);
     q = w / beta.back();
   }
-  return std::max(estimate, 0.0);
+  return estimate;
+}
+
+}  // namespace
+
+double largest_mass_scaled_eigenvalue(const PointAdjacency& adj, const std::vector<Mat3>& edge,
+                                      const std::vector<double>& mass, double tolerance,
+                                      int max_iterations) {
+  if (adj.num_points() == 0 || edge.empty()) return 0;
+  return std::max(lanczos_top(adj, {{&edge, -1.0, 1.0}}, mass, tolerance, max_iterations), 0.0);
+}
+
+double largest_filtered_eigenvalue(const PointAdjacency& adj, const std::vector<Mat3>& edge,
+                                   const std::vector<double>& mass, double tolerance,
+                                   int max_iterations) {
+  if (adj.num_points() == 0 || edge.empty()) return 0;
+  return lanczos_top(adj, {{&edge, 1.0, 1.0}}, mass, tolerance, max_iterations);
+}
+
+double combined_step_limit(const PointAdjacency& adj, const std::vector<Mat3>& K,
+                           const std::vector<Mat3>& C, const std::vector<double>& mass,
+                           bool filtered, double stiffness, double damping) {
+  const double inf = std::numeric_limits<double>::infinity();
+  // dt²λ + 2dtγ = 4 with the two maxima apart: stable, since λ_max is subadditive.
+  auto apart = [](double lambda, double gamma) {
+    const double disc = gamma * gamma + 4 * lambda;
+    const double denom = disc >= 0 ? gamma + std::sqrt(disc) : 0.0;
+    return denom > 0 ? 4 / denom : std::numeric_limits<double>::infinity();
+  };
+  if (adj.num_points() == 0 || C.empty() || damping <= 0) return apart(stiffness, 0.0);
+  const double own = filtered ? 1.0 : -1.0;
+  auto stable = [&](double dt) {
+    return lanczos_top(adj, {{&K, own, dt * dt}, {&C, -1.0, 2 * dt}}, mass, 1e-3, 300) <= 4.0;
+  };
+  double lo = apart(stiffness, damping), hi = 2 * lo;
+  if (!std::isfinite(lo)) return inf;
+  for (int k = 0; stable(hi); ++k) {
+    if (k == 30) return inf;
+    lo = hi;
+    hi *= 2;
+  }
+  while (hi > 1.01 * lo) {
+    const double mid = std::sqrt(lo * hi);
+    (stable(mid) ? lo : hi) = mid;
+  }
+  return lo;
 }
 
 SpectralScale spectral_scale(double eigenvalue, double star_max) {
   SpectralScale out{eigenvalue, star_max, 1.0};
   if (star_max > 0) out.scale = std::min(1.0, kSpectralMargin * eigenvalue / star_max);
+  return out;
+}
+
+SpectralScale filter_scale(double filtered, double stiffness, double star_max, bool large_strain) {
+  SpectralScale out{filtered, star_max, 1.0};
+  const double margin = std::max((kSpectralMargin - 1) * std::abs(filtered),
+                                 large_strain ? kFilterStiffening * stiffness : 0.0);
+  const double with_margin = filtered + margin;
+  if (star_max > 0) out.scale = with_margin / (kSemiImplicitShare * star_max);
   return out;
 }
 

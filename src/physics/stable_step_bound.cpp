@@ -48,9 +48,10 @@ std::vector<PointInertia> star_inertia(const PointAdjacency& adj, const TetEnerg
 
 double stable_step_of(const PointInertia& p, bool semi_implicit) {
   if (p.mass <= 0) return 0;
-  const double w2 = p.stiffness / p.mass, gamma = p.damping / p.mass;
-  const double root = std::sqrt(gamma * gamma + (semi_implicit ? 1.0 : 4.0) * w2);
-  const double denom = gamma + root;
+  const double share = semi_implicit ? kSemiImplicitShare : 1.0;
+  const double w2 = (share * p.stiffness + p.contact_stiffness) / p.mass;
+  const double gamma = p.damping / p.mass, disc = gamma * gamma + 4.0 * w2;
+  const double denom = disc >= 0 ? gamma + std::sqrt(disc) : 0.0;
   return denom > 0 ? 4.0 / denom : std::numeric_limits<double>::infinity();
 }
 

@@ -35,13 +35,21 @@ TetEnergyBounds tet_energy_bounds(const TetGeometry& geo, const MaterialLaw& law
 struct PointInertia {
   double mass = 0, stiffness = 0, damping = 0;
   double gravity_mass = 0;
+  double contact_stiffness = 0;  // N/m of tool penalty: explicit for every integrator
 };
+
+/// The uncalibrated semi-implicit rule: the elastic ω² counts a quarter, the thesis' doubled
+/// step. Calibrated (one global step) the elastic part is the filtered spectrum instead
+/// (physics/spectral_bound.hpp, filter_scale()); the contact penalty always counts in full.
+inline constexpr double kSemiImplicitShare = 0.25;
 
 /// Σ over the tets of each point (whole stars, every weight 1), mass = lumped mass.
 std::vector<PointInertia> star_inertia(const PointAdjacency& adj, const TetEnergyBounds& tets,
                                        const std::vector<double>& mass);
 
-/// The largest stable step of a point (s): +inf when it feels no stiffness and no damping.
+/// The largest stable step of a point (s): the smallest root of dt²ω² + 2dt γ = 4 with
+/// ω² = (share × stiffness + contact) / m, share 1 or kSemiImplicitShare; +inf when there is
+/// none (no stiffness and no damping, or a negative calibrated semi-implicit stiffness).
 double stable_step_of(const PointInertia& p, bool semi_implicit);
 
 /// Newton–Cotes (the two-step midpoint rule) is stable up to dt = 1/ω undamped: this share of

@@ -37,6 +37,23 @@ void collect_paths(const json& node, const std::string& prefix, std::vector<std:
     collect_paths(*it, prefix.empty() ? "N" : prefix + ".N", paths);
 }
 
+// The node of `token` under `resolved`: its own properties, or those of the one oneOf branch
+// that declares it (a tool shape's sphere, capsule or flat_cylinder), so that a fault inside the
+// chosen branch is described by its own keywords and not by valijson's text of every branch.
+const json* property_node(const json& resolved, const std::string& token) {
+  if (resolved.contains("properties") && resolved["properties"].contains(token))
+    return &resolved["properties"][token];
+  if (!resolved.contains("oneOf")) return nullptr;
+  const json* found = nullptr;
+  for (const json& branch : resolved["oneOf"]) {
+    const json& b = resolve_ref(branch);
+    if (!b.contains("properties") || !b["properties"].contains(token)) continue;
+    if (found) return nullptr;  // declared by several branches: no single schema
+    found = &b["properties"][token];
+  }
+  return found;
+}
+
 }  // namespace
 
 const json& scenario_schema() {
@@ -67,9 +84,10 @@ const json* schema_at(const std::string& pointer, const json& document) {
         return nullptr;
       node = &resolved["items"];
       value = &(*value)[index];
-    } else if (value->is_object() && resolved.contains("properties") &&
-               resolved["properties"].contains(token)) {
-      node = &resolved["properties"][token];
+    } else if (const json* child = value->is_object() && value->contains(token)
+                                       ? property_node(resolved, token)
+                                       : nullptr) {
+      node = child;
       value = &value->at(token);
     } else {
       return nullptr;

@@ -21,7 +21,8 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   transfer_ = (coupling_ == Coupling::Energy || coupling_ == Coupling::EnergyConsistent) && L > 1;
   std::vector<HierarchyLevel> levels;
   for (int l = 0; l < L; ++l) {
-    models_.push_back(std::make_unique<LevelModel>(build_level_model(*meshes[l], setup.law)));
+    models_.push_back(std::make_unique<LevelModel>(
+        build_level_model(*meshes[l], setup.law, is_semi_implicit(setup.integrator))));
     levels.push_back({meshes[l], &models_[l]->adj});
   }
   hierarchy_ = std::make_unique<Hierarchy>(levels, build_level_links(levels));
@@ -46,8 +47,8 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
     const Vec3 c = centre_of_mass(*models_[0]->mesh, models_[0]->mass);
     for (int i = 0; i < s.size(); ++i)
       if (s.free_point[i])
-        s.v[i] = setup.initial_velocity +
-                 setup.initial_angular_velocity.cross(meshes[l]->points[i] - c);
+        s.v[i] =
+            setup.initial_velocity + setup.initial_angular_velocity.cross(meshes[l]->points[i] - c);
     forces_.push_back(std::make_unique<LevelForceField>(*models_[l], setup.gravity));
     forces_[l]->set_clock(&tasks_);
     if (transfer_)
@@ -68,8 +69,7 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
     level_forces_.push_back(s.f.data());
   }
   std::function<void()> gathered;
-  if (transfer_)
-    gathered = [this] { transfer_forces(); };
+  if (transfer_) gathered = [this] { transfer_forces(); };
   loads_ = setup.loads;
   load_factors_.assign(loads_.size(), 0.0);
   if (!setup.tools.empty()) {
@@ -93,8 +93,8 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   global_step_ = !setup.time_levels;
   step_share_ = is_two_step(setup.integrator) ? kTwoStepMidpointShare : 1.0;
   update_inertia();
-  stepper_ = std::make_unique<Stepper>(setup.integrator, std::move(blocks),
-                                       [this] { after_positions(); }, std::move(gathered));
+  stepper_ = std::make_unique<Stepper>(
+      setup.integrator, std::move(blocks), [this] { after_positions(); }, std::move(gathered));
   dt_ = setup.dt;
   steps_per_frame_ = base_steps_per_frame_ = setup.steps_per_frame;
   global_frame_ = setup.dt * setup.steps_per_frame;
@@ -498,7 +498,8 @@ void HierarchicalSimulation::update_stable_steps() {
     // One global step: each level's bounds calibrated by its spectrum (LevelModel calibrated());
     // time levels step on the proven local bounds.
     for (int p : lists_->active(l))
-      loaded_[l][p] = global_step_ ? calibrated(inertia_[l][p], *models_[l]) : inertia_[l][p];
+      loaded_[l][p] = global_step_ ? calibrated(inertia_[l][p], *models_[l], semi_implicit_)
+                                   : damping_calibrated(inertia_[l][p], *models_[l]);
   }
   if (contact_) {
     near_.clear();
@@ -507,11 +508,12 @@ void HierarchicalSimulation::update_stable_steps() {
     std::sort(near_.begin(), near_.end());
     near_.erase(std::unique(near_.begin(), near_.end()), near_.end());
     const SkinMap& map = contact_->map();
-    add_contact_bounds(contact_->penalty(), near_,
-                       [&](int s, std::vector<ActiveTerm>& row) {
-                         row.insert(row.end(), map.begin(s), map.end(s));
-                       },
-                       loaded_);
+    add_contact_bounds(
+        contact_->penalty(), near_,
+        [&](int s, std::vector<ActiveTerm>& row) {
+          row.insert(row.end(), map.begin(s), map.end(s));
+        },
+        loaded_);
   }
   in_force_ = {};
   in_force_.dt = std::numeric_limits<double>::infinity();

@@ -107,12 +107,13 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
   std::vector<LevelModel> models;
   std::vector<std::vector<PointInertia>> star;
   for (int l = 0; l <= last; ++l) {
-    models.push_back(build_level_model(*meshes[l], law));
+    models.push_back(build_level_model(*meshes[l], law, semi));
     star.push_back(models.back().star);
   }
   auto own = [&](int l, int p) {  // without contact
     const PointInertia& s = models[l].star[p];
-    return sc.time_levels.enabled ? s : calibrated(s, models[l]);
+    return sc.time_levels.enabled ? damping_calibrated(s, models[l])
+                                  : calibrated(s, models[l], semi);
   };
   // One global step: calibrated by the level's spectrum; time levels: proven local bounds.
   for (int l = 0; l <= last; ++l)
@@ -142,9 +143,10 @@ Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMes
   std::ostringstream os;
   os.precision(4);
   if (is_two_step(sc.time.integrator) && material_law(sc.material).damped())
-    warn("time.integrator newton_cotes with material.damping: unstable at every step size (its "
-         "parasitic solution grows like exp(gamma t / 2) with the damping rate gamma of the "
-         "stiffest mode; docs/integrators.md); set phi = psi = 0 or use modified_euler");
+    warn(
+        "time.integrator newton_cotes with material.damping: unstable at every step size (its "
+        "parasitic solution grows like exp(gamma t / 2) with the damping rate gamma of the "
+        "stiffest mode; docs/integrators.md); set phi = psi = 0 or use modified_euler");
   if (sc.time.courant > 1)
     warn("time.courant " + std::to_string(sc.time.courant) +
          " > 1: steps above the stable step estimate (for stability studies)");

@@ -12,8 +12,8 @@ int stable_time_level(const TimeLevelRules& rules, double stable) {
 std::vector<std::int8_t> courant_levels(const LevelModel& model, const TimeLevelRules& rules) {
   std::vector<std::int8_t> level(model.num_points(), 0);
   for (int i = 0; i < model.num_points(); ++i)
-    level[i] = static_cast<std::int8_t>(
-        stable_time_level(rules, stable_step_of(model.star[i], rules.semi_implicit)));
+    level[i] = static_cast<std::int8_t>(stable_time_level(
+        rules, stable_step_of(damping_calibrated(model.star[i], model), rules.semi_implicit)));
   return level;
 }
 

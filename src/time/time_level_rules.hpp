@@ -17,18 +17,19 @@
 namespace mrsim {
 
 struct TimeLevelRules {
-  double frame_dt = 0.04;        // s
-  int max_level = 0;             // finest allowed level: frame_dt / 2^max_level is the finest step
-  double courant = 1.0;          // C, the fraction of the stable-step estimate used
-  double velocity_change = 0.01; // β, dimensionless
-  bool semi_implicit = false;    // the elastic part of the estimate doubled
+  double frame_dt = 0.04;         // s
+  int max_level = 0;              // finest allowed level: frame_dt / 2^max_level is the finest step
+  double courant = 1.0;           // C, the fraction of the stable-step estimate used
+  double velocity_change = 0.01;  // β, dimensionless
+  bool semi_implicit = false;     // the elastic part of the estimate doubled
 };
 
 /// The coarsest time level whose step frame_dt / 2^k is within C × `stable` (s), capped at
 /// rules.max_level (a point that cannot meet it gets max_level; the stable-step check warns).
 int stable_time_level(const TimeLevelRules& rules, double stable);
 
-/// stable_time_level of every point of a level alone (whole stars, no contact).
+/// stable_time_level of every point of a level alone (whole stars, damping_calibrated(), no
+/// contact).
 std::vector<std::int8_t> courant_levels(const LevelModel& model, const TimeLevelRules& rules);
 
 /// δ of method.md §5.2 for a particle with force f, inverse mass, step dt and edge h.

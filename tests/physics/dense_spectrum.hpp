@@ -33,8 +33,9 @@ inline TetMesh jittered_box(int nx, int ny, int nz, double jitter, unsigned seed
   return m;
 }
 
-// ω_max² of the free (unsupported) level: the largest eigenvalue of M^-1/2 K M^-1/2.
-inline double omega_max_squared(const LevelModel& m, bool damping = false) {
+// ω_max² of the free (unsupported) level: the largest eigenvalue of M^-1/2 K M^-1/2 (of D with
+// `damping`; of K − 2 blockdiag K with `filtered`, what the semi-implicit filter leaves).
+inline double omega_max_squared(const LevelModel& m, bool damping = false, bool filtered = false) {
   const int n = m.num_points();
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * n, 3 * n);
   const auto& blocks = damping ? m.D : m.K;
@@ -42,7 +43,7 @@ inline double omega_max_squared(const LevelModel& m, bool damping = false) {
     for (int e = m.adj.nbr_start[i]; e < m.adj.nbr_start[i + 1]; ++e) {
       const int j = m.adj.nbr[e];
       K.block<3, 3>(3 * i, 3 * j) += blocks[e];
-      K.block<3, 3>(3 * i, 3 * i) -= blocks[e];
+      K.block<3, 3>(3 * i, 3 * i) += filtered ? blocks[e] : Mat3(-blocks[e]);
     }
   for (int i = 0; i < 3 * n; ++i)
     for (int j = 0; j < 3 * n; ++j) K(i, j) /= std::sqrt(m.mass[i / 3] * m.mass[j / 3]);

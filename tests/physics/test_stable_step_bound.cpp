@@ -100,6 +100,28 @@ TEST(StableStepBound, SemiImplicitDoublesTheUndampedEstimate) {
   EXPECT_NEAR(estimate(m, true), 2 * estimate(m), 1e-12 * estimate(m));
 }
 
+TEST(StableStepBound, TheFilterTakesTheElasticStiffnessNotTheContactPenalty) {
+  // The semi-implicit filter probes J_i at rest without tools: a contact penalty stays explicit,
+  // so it shortens the semi-implicit step as much as the explicit one.
+  PointInertia contact_only;
+  contact_only.mass = 2.0;
+  contact_only.contact_stiffness = 8.0e4;
+  EXPECT_DOUBLE_EQ(stable_step_of(contact_only, true), stable_step_of(contact_only, false));
+  EXPECT_DOUBLE_EQ(stable_step_of(contact_only, false), 2.0 / 200.0);
+  PointInertia elastic = contact_only;
+  std::swap(elastic.stiffness, elastic.contact_stiffness);
+  EXPECT_DOUBLE_EQ(stable_step_of(elastic, true), 2.0 * stable_step_of(elastic, false));
+  // A calibrated semi-implicit stiffness below zero (ω² = -5000 /s²): no elastic limit; with
+  // damping γ = 200 /s the smallest root of dt²ω² + 2 dt γ = 4.
+  elastic.stiffness = -4.0e4;
+  EXPECT_TRUE(std::isinf(stable_step_of(elastic, true)));
+  elastic.damping = 400.0;
+  const double dt = stable_step_of(elastic, true);
+  EXPECT_DOUBLE_EQ(dt, 4.0 / (200.0 + std::sqrt(200.0 * 200.0 - 4 * 5000.0)));
+  EXPECT_NEAR(-5000.0 * dt * dt + 2 * 200.0 * dt, 4.0, 1e-12);
+  EXPECT_GT(dt, 2.0 / 200.0);  // longer than the damping limit alone
+}
+
 TEST(StableStepBound, StarValuesAreTheLumpedMassAndFourTimesTheTetBounds) {
   const LevelModel m = build_level_model(jittered_box(3, 2, 2, 0.2, 4), law_with(5e4, 1e4));
   double tets = 0, star = 0;

@@ -2,10 +2,12 @@
 """The stability test matrix (issue 15 point 3, scripts/stability_matrix.py) in its quick form:
 the beam and the adaptive beam, modified Euler and semi-implicit, with and without time levels.
 Every run with a computed step finishes, and the measured true limit lies between 1.0 and 2.5
-times mrsim's estimate for one global explicit step (1.0 and 5.0 with time levels, whose steps
-are powers of two; at least 1.0 for the semi-implicit step): an optimistic estimate (a step
-that blows up) or a uselessly cautious one fails here. The whole matrix (every bundled scenario, liver hierarchies up to 125k tets, ψ
-up to 20) is run by hand; its table is in docs/integrators.md."""
+times mrsim's estimate for one global step, explicit or semi-implicit (1.0 and 5.0 with time
+levels, whose steps are powers of two; 1.0 and 4.0 for a global semi-implicit step in these
+short runs, where the body has not deformed enough to need the estimate's Green-Lagrange
+allowance): an optimistic estimate (a step that blows up) or a uselessly cautious one fails
+here. The whole matrix (every bundled scenario, liver hierarchies
+up to 125k tets, ψ up to 20) is run by hand; its table is in docs/stability_matrix.md."""
 import json
 import os
 import subprocess
@@ -36,7 +38,7 @@ def main():
         lo, hi = row["band"]
         check(lo >= 1.0 and lo <= row["ratio"] <= (hi or float("inf")),
               what + ": true limit / estimate %.2f in [%g, %s]" % (row["ratio"], lo, hi))
-        if row["integrator"] == "modified_euler" and not row["time_levels"]:
+        if not row["time_levels"] and row["integrator"] == "modified_euler":
             check(row["ratio"] <= 2.5, what + ": one global explicit step, within 2.5")
     # Issue 16 point 4: in the adaptive hierarchy the semi-implicit step stays at least twice
     # the explicit one (the interface mass keeps the filter's margin).

@@ -41,18 +41,47 @@ TEST(SchemaValidator, MessagesNameFileLineColumnAndKeyPath) {
 // character; a 30 000-character name segfaulted. Long strings are now an input error.
 TEST(SchemaValidator, LongStringsAreAnIssueNotACrash) {
   const std::string name(30000, 'a');
-  EXPECT_INPUT_ERROR(
-      validate_text("name: " + name + "\nobject:\n  levels:\n    - mesh: a.vtu\n"
-                    "material: {lambda: 1, mu: 1}\n"),
-      "s.yaml:1:1: name: is 30000 bytes long; at most 4096 are accepted");
+  EXPECT_INPUT_ERROR(validate_text("name: " + name +
+                                   "\nobject:\n  levels:\n    - mesh: a.vtu\n"
+                                   "material: {lambda: 1, mu: 1}\n"),
+                     "s.yaml:1:1: name: is 30000 bytes long; at most 4096 are accepted");
   const std::string dir(4097, 'd');
-  EXPECT_INPUT_ERROR(validate_text(kHead + "material: {lambda: 1, mu: 1}\noutput: {dir: " + dir +
-                                   "}\n"),
-                     "output.dir: is 4097 bytes long; at most 4096 are accepted");
+  EXPECT_INPUT_ERROR(
+      validate_text(kHead + "material: {lambda: 1, mu: 1}\noutput: {dir: " + dir + "}\n"),
+      "output.dir: is 4097 bytes long; at most 4096 are accepted");
   // A long free-text description is fine, and 4096 bytes still are.
-  EXPECT_NO_THROW(validate_text("description: " + std::string(60000, 'x') + "\n" + kHead +
-                                "material: {lambda: 1, mu: 1}\noutput: {dir: " +
-                                std::string(4096, 'd') + "}\n"));
+  EXPECT_NO_THROW(validate_text(
+      "description: " + std::string(60000, 'x') + "\n" + kHead +
+      "material: {lambda: 1, mu: 1}\noutput: {dir: " + std::string(4096, 'd') + "}\n"));
+}
+
+// Issue 18 defect 10: inside a oneOf (the tool shapes), a fault of the chosen branch is said in
+// its own words; valijson's text for every other branch ("Missing required property
+// 'capsule'") is not shown.
+TEST(SchemaValidator, FaultsInsideTheChosenOneOfBranchAreDescribedAlone) {
+  const std::string head = kHead + "material: {lambda: 1, mu: 1}\ntool:\n  shape: ";
+  const std::string tail = "\n  trajectory:\n    - {t: 0, position: [0, 0, 0]}\n";
+  auto message = [&](const std::string& shape) {
+    return test::input_error_of([&] { validate_text(head + shape + tail); });
+  };
+  const std::string radius = message("{sphere: {radius: 0}}");
+  EXPECT_NE(radius.find("s.yaml:7:20: tool.shape.sphere.radius: must be > 0 (got 0)"),
+            std::string::npos)
+      << radius;
+  const std::string length = message("{capsule: {radius: 0.01}}");
+  EXPECT_NE(length.find("tool.shape.capsule.length: required key is missing"), std::string::npos)
+      << length;
+  const std::string unknown = message("{flat_cylinder: {radius: 0.01, length: 0.1, heigth: 1}}");
+  EXPECT_NE(unknown.find("tool.shape.flat_cylinder.heigth: unknown key"), std::string::npos)
+      << unknown;
+  for (const std::string& m : {radius, length, unknown}) {
+    EXPECT_EQ(m.find("Missing required property"), std::string::npos) << m;
+    EXPECT_EQ(m.find("could not be validated"), std::string::npos) << m;
+  }
+  // Two shapes, or none, are still named as the choice.
+  EXPECT_NE(message("{sphere: {radius: 0.01}, capsule: {radius: 0.01, length: 0.1}}")
+                .find("give exactly one of sphere, capsule or flat_cylinder, not several"),
+            std::string::npos);
 }
 
 // Issue 18 defect 9: a NUL or invalid UTF-8 in a text was copied into every output.
@@ -64,8 +93,8 @@ TEST(SchemaValidator, TextIsValidUtf8WithoutControlCharacters) {
                      "description: is not valid UTF-8 (byte 3)");
   EXPECT_INPUT_ERROR(validate_text("description: \"\xED\xA0\x80\"\n" + tail),
                      "is not valid UTF-8 (byte 0)");  // a surrogate
-  EXPECT_NO_THROW(validate_text("description: \"caf\xC3\xA9 \xE2\x86\x92 \xF0\x9F\x98\x80\tok\"\n" +
-                                tail));
+  EXPECT_NO_THROW(
+      validate_text("description: \"caf\xC3\xA9 \xE2\x86\x92 \xF0\x9F\x98\x80\tok\"\n" + tail));
 }
 
 TEST(SchemaValidator, UnknownKeyWithoutCloseMatchListsTheKnownKeys) {
