@@ -78,14 +78,13 @@ void measure_spectrum(LevelModel& m, bool semi_implicit) {
 
 }  // namespace
 
-PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit) {
+PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit, bool time_levels) {
+  if (time_levels) {
+    p.damping *= m.time_level_damping_scale;
+    return p;
+  }
   p.stiffness *= semi_implicit ? m.filter_spectrum.scale : m.stiffness_spectrum.scale;
   p.damping *= m.step_damping_scale;
-  return p;
-}
-
-PointInertia damping_calibrated(PointInertia p, const LevelModel& m) {
-  p.damping *= m.time_level_damping_scale;
   return p;
 }
 

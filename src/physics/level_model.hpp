@@ -54,12 +54,11 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law,
 /// one where it is loose, step beyond its own limit (the tiny-tet slab of
 /// tests/simulation/test_time_levels.cpp did).
 /// `semi_implicit`: the stiffness takes the filtered scale instead (it stands for the stiffness
-/// the filter leaves explicit; it may be negative).
-PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit = false);
-
-/// For time levels: the proven stiffness bound, the damping scaled to the level's combined limit
-/// (time_level_damping_scale). Where damping sets the step, the damping and stiffness modes
+/// the filter leaves explicit; it may be negative). `time_levels`: the proven stiffness bound
+/// is kept and only the damping is scaled to the level's combined limit
+/// (time_level_damping_scale): where damping sets the step, the damping and stiffness modes
 /// apart were 1.6–4.6 times too cautious on the liver.
-PointInertia damping_calibrated(PointInertia p, const LevelModel& m);
+PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit = false,
+                        bool time_levels = false);
 
 }  // namespace mrsim

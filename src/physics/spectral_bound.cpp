@@ -100,11 +100,14 @@ double combined_step_limit(const PointAdjacency& adj, const std::vector<Mat3>& K
                            const std::vector<Mat3>& C, const std::vector<double>& mass,
                            bool filtered, double stiffness, double damping) {
   const double inf = std::numeric_limits<double>::infinity();
-  // dt²λ + 2dtγ = 4 with the two maxima apart: stable, since λ_max is subadditive.
+  // dt²λ + 2dtγ = 4 with the two maxima apart (one oscillator of unit mass): stable, since
+  // λ_max is subadditive.
   auto apart = [](double lambda, double gamma) {
-    const double disc = gamma * gamma + 4 * lambda;
-    const double denom = disc >= 0 ? gamma + std::sqrt(disc) : 0.0;
-    return denom > 0 ? 4 / denom : std::numeric_limits<double>::infinity();
+    PointInertia unit;
+    unit.mass = 1;
+    unit.stiffness = lambda;
+    unit.damping = gamma;
+    return stable_step_of(unit, false);
   };
   if (adj.num_points() == 0 || C.empty() || damping <= 0) return apart(stiffness, 0.0);
   const double own = filtered ? 1.0 : -1.0;

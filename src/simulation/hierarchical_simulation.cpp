@@ -496,10 +496,9 @@ void HierarchicalSimulation::update_stable_steps() {
     loaded_[l].resize(models_[l]->num_points());
     stable_dt_[l].resize(models_[l]->num_points(), 0.0);
     // One global step: each level's bounds calibrated by its spectrum (LevelModel calibrated());
-    // time levels step on the proven local bounds.
+    // time levels keep the proven stiffness bounds, the damping calibrated.
     for (int p : lists_->active(l))
-      loaded_[l][p] = global_step_ ? calibrated(inertia_[l][p], *models_[l], semi_implicit_)
-                                   : damping_calibrated(inertia_[l][p], *models_[l]);
+      loaded_[l][p] = calibrated(inertia_[l][p], *models_[l], semi_implicit_, !global_step_);
   }
   if (contact_) {
     near_.clear();

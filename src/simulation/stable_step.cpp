@@ -112,10 +112,10 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
   }
   auto own = [&](int l, int p) {  // without contact
     const PointInertia& s = models[l].star[p];
-    return sc.time_levels.enabled ? damping_calibrated(s, models[l])
-                                  : calibrated(s, models[l], semi);
+    return calibrated(s, models[l], semi, sc.time_levels.enabled);
   };
-  // One global step: calibrated by the level's spectrum; time levels: proven local bounds.
+  // One global step: calibrated by the level's spectrum; time levels: proven stiffness bounds,
+  // calibrated damping.
   for (int l = 0; l <= last; ++l)
     for (int p = 0; p < static_cast<int>(star[l].size()); ++p) star[l][p] = own(l, p);
   add_tool_contact(sc, {meshes.begin(), meshes.begin() + last + 1}, law, star);

@@ -28,7 +28,7 @@ struct TimeLevelRules {
 /// rules.max_level (a point that cannot meet it gets max_level; the stable-step check warns).
 int stable_time_level(const TimeLevelRules& rules, double stable);
 
-/// stable_time_level of every point of a level alone (whole stars, damping_calibrated(), no
+/// stable_time_level of every point of a level alone (whole stars, calibrated() for time levels, no
 /// contact).
 std::vector<std::int8_t> courant_levels(const LevelModel& model, const TimeLevelRules& rules);
 

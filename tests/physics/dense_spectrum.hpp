@@ -33,22 +33,33 @@ inline TetMesh jittered_box(int nx, int ny, int nz, double jitter, unsigned seed
   return m;
 }
 
-// ω_max² of the free (unsupported) level: the largest eigenvalue of M^-1/2 K M^-1/2 (of D with
-// `damping`; of K − 2 blockdiag K with `filtered`, what the semi-implicit filter leaves).
-inline double omega_max_squared(const LevelModel& m, bool damping = false, bool filtered = false) {
+// M^-1/2 (coefficient × A) M^-1/2 of a whole free level, dense, from its CSR edge blocks: A_ij
+// off the diagonal and own × Σ_j A_ij on it (own = -1: A itself; +1: A − 2 blockdiag A).
+inline Eigen::MatrixXd dense_operator(const LevelModel& m, const std::vector<Mat3>& blocks,
+                                      double own = -1, double coefficient = 1) {
   const int n = m.num_points();
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * n, 3 * n);
-  const auto& blocks = damping ? m.D : m.K;
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(3 * n, 3 * n);
   for (int i = 0; i < n; ++i)
     for (int e = m.adj.nbr_start[i]; e < m.adj.nbr_start[i + 1]; ++e) {
       const int j = m.adj.nbr[e];
-      K.block<3, 3>(3 * i, 3 * j) += blocks[e];
-      K.block<3, 3>(3 * i, 3 * i) += filtered ? blocks[e] : Mat3(-blocks[e]);
+      A.block<3, 3>(3 * i, 3 * j) += coefficient * blocks[e];
+      A.block<3, 3>(3 * i, 3 * i) += (own * coefficient) * blocks[e];
     }
   for (int i = 0; i < 3 * n; ++i)
-    for (int j = 0; j < 3 * n; ++j) K(i, j) /= std::sqrt(m.mass[i / 3] * m.mass[j / 3]);
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(K, Eigen::EigenvaluesOnly);
-  return es.eigenvalues().maxCoeff();
+    for (int j = 0; j < 3 * n; ++j) A(i, j) /= std::sqrt(m.mass[i / 3] * m.mass[j / 3]);
+  return A;
+}
+
+inline double largest_eigenvalue(const Eigen::MatrixXd& A) {
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(A, Eigen::EigenvaluesOnly)
+      .eigenvalues()
+      .maxCoeff();
+}
+
+// ω_max² of the free (unsupported) level: the largest eigenvalue of M^-1/2 K M^-1/2 (of D with
+// `damping`; of K − 2 blockdiag K with `filtered`, what the semi-implicit filter leaves).
+inline double omega_max_squared(const LevelModel& m, bool damping = false, bool filtered = false) {
+  return largest_eigenvalue(dense_operator(m, damping ? m.D : m.K, filtered ? 1.0 : -1.0));
 }
 
 }  // namespace mrsim::test_support

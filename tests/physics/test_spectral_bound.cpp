@@ -102,20 +102,8 @@ namespace {
 // The dense truth of combined_step_limit(): the largest dt with λ_max(M⁻¹(dt²A + 2dt C)) ≤ 4.
 double dense_combined_limit(const LevelModel& m, bool filtered) {
   auto top = [&](double dt) {
-    const int n = m.num_points();
-    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(3 * n, 3 * n);
-    for (int i = 0; i < n; ++i)
-      for (int e = m.adj.nbr_start[i]; e < m.adj.nbr_start[i + 1]; ++e) {
-        const int j = m.adj.nbr[e];
-        const Mat3 blk = dt * dt * m.K[e];
-        A.block<3, 3>(3 * i, 3 * j) += blk + 2 * dt * m.D[e];
-        A.block<3, 3>(3 * i, 3 * i) += (filtered ? blk : Mat3(-blk)) - 2 * dt * m.D[e];
-      }
-    for (int i = 0; i < 3 * n; ++i)
-      for (int j = 0; j < 3 * n; ++j) A(i, j) /= std::sqrt(m.mass[i / 3] * m.mass[j / 3]);
-    return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(A, Eigen::EigenvaluesOnly)
-        .eigenvalues()
-        .maxCoeff();
+    return largest_eigenvalue(dense_operator(m, m.K, filtered ? 1.0 : -1.0, dt * dt) +
+                              dense_operator(m, m.D, -1.0, 2 * dt));
   };
   double lo = 1e-7, hi = 1.0;
   for (int k = 0; k < 60; ++k) {
