@@ -24,22 +24,33 @@ struct CommonArgs {
   std::string scenario;
   std::vector<std::string> overrides;
   std::string output;
+  std::string resume;  // run --resume OUTDIR
   int threads = 0;
   bool quiet = false;
 };
 
-void add_scenario_args(CLI::App* cmd, CommonArgs& a) {
-  cmd->add_option("scenario", a.scenario, "Scenario file (YAML)")->required();
+CLI::Option* add_scenario_args(CLI::App* cmd, CommonArgs& a, bool required = true) {
+  CLI::Option* scenario = cmd->add_option("scenario", a.scenario, "Scenario file (YAML)");
+  if (required) scenario->required();
   cmd->add_option("--set", a.overrides,
                   "Override a scenario key, e.g. --set material.lambda=5.0e+4 (repeatable; "
                   "validated like the file)");
   cmd->add_flag("-q,--quiet", a.quiet, "No progress and no warnings on stderr");
+  return scenario;
 }
 
 Scenario load(const CommonArgs& a) {
   std::vector<std::string> overrides = a.overrides;
   if (!a.output.empty()) overrides.push_back("output.dir=" + a.output);
   return load_scenario(a.scenario, overrides);
+}
+
+// Exit code of a run that ended without an error.
+int finished(const RunSummary& s) {
+  if (s.interrupted_by == 0) return kExitOk;
+  std::cerr << "mrsim: interrupted; every frame written so far is complete, and checkpoint.h5 "
+               "lets mrsim run --resume go on (summary.json: status \"interrupted\")\n";
+  return 128 + s.interrupted_by;
 }
 
 int command_run(const CommonArgs& a) {
@@ -55,16 +66,34 @@ int command_run(const CommonArgs& a) {
     progress.finish();
     info("mrsim: " + std::to_string(s.frames) + " frames, " + std::to_string(s.steps) +
          " steps in " + std::to_string(s.wall_time) + " s; outputs in " + sc.output.dir.string());
-    if (s.interrupted_by != 0) {
-      std::cerr << "mrsim: interrupted; every frame written so far is complete (summary.json: "
-                   "status \"interrupted\")\n";
-      return 128 + s.interrupted_by;
-    }
+    return finished(s);
   } catch (...) {
     progress.finish();
     throw;
   }
-  return kExitOk;
+}
+
+// mrsim run --resume OUTDIR: the run goes on from its checkpoint (docs/output.md).
+int command_resume(const CommonArgs& a) {
+  set_quiet(a.quiet);
+  if (a.threads > 0) omp_set_num_threads(a.threads);
+  if (!a.scenario.empty() || !a.overrides.empty() || !a.output.empty())
+    throw InputError("--resume goes on with the run in its folder, with the scenario it started "
+                     "with: give no scenario, --set or -o with it");
+  ProgressReporter progress(!a.quiet);
+  RunOptions options;
+  options.progress = [&](const RunProgress& p) { progress(p); };
+  watch_interruptions();
+  try {
+    const RunSummary s = resume_run(a.resume, options);
+    progress.finish();
+    info("mrsim: resumed, " + std::to_string(s.frames) + " frames, " + std::to_string(s.steps) +
+         " steps in " + std::to_string(s.wall_time) + " s (whole run); outputs in " + a.resume);
+    return finished(s);
+  } catch (...) {
+    progress.finish();
+    throw;
+  }
 }
 
 int command_check(const CommonArgs& a) {
@@ -82,8 +111,17 @@ int run_cli(int argc, char** argv) {
   app.require_subcommand(1);
   CommonArgs run_args, check_args;
   CLI::App* run = app.add_subcommand("run", "Run a scenario and write its outputs");
-  add_scenario_args(run, run_args);
+  CLI::Option* scenario = add_scenario_args(run, run_args, false);
   run->add_option("-o,--output", run_args.output, "Output folder (overrides output.dir)");
+  CLI::Option* resume =
+      run->add_option("--resume", run_args.resume,
+                      "Go on with the interrupted or killed run in this output folder from its "
+                      "checkpoint.h5, exactly as if it had never stopped (no scenario then)");
+  scenario->excludes(resume);
+  run->callback([scenario, resume] {
+    if (scenario->count() == 0 && resume->count() == 0)
+      throw CLI::RequiredError("scenario (or --resume OUTDIR)");
+  });
   run->add_option("--threads", run_args.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::PositiveNumber);
   CLI::App* check = app.add_subcommand(
@@ -99,7 +137,7 @@ int run_cli(int argc, char** argv) {
     return code == 0 ? kExitOk : kExitBadInput;
   }
   try {
-    if (*run) return command_run(run_args);
+    if (*run) return run_args.resume.empty() ? command_run(run_args) : command_resume(run_args);
     if (*mesh.command) return mesh.run();
     if (*compare.command) return compare.run();
     if (*sweep.command) return sweep.run();

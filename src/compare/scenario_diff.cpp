@@ -11,12 +11,15 @@ nlohmann::json parse(const YamlText& yaml) {
   return scenario::yaml_to_json(yaml.text, options).value;
 }
 
-bool is_output_dir(const std::string& path, const std::string&) { return path == "output.dir"; }
+// Where a run writes and how often it checkpoints change no result.
+bool is_output_place(const std::string& path, const std::string&) {
+  return path == "output.dir" || path == "output.checkpoint_every";
+}
 
 }  // namespace
 
 JsonDiff diff_scenarios(const YamlText& a, const YamlText& b, const Tolerance& tolerance) {
-  return diff_json(parse(a), parse(b), tolerance, is_output_dir);
+  return diff_json(parse(a), parse(b), tolerance, is_output_place);
 }
 
 }  // namespace mrsim

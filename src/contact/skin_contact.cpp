@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace mrsim {
 
@@ -86,6 +88,20 @@ void SkinContact::near_tools(double t0, double t1, const std::vector<LevelFields
 
 void SkinContact::begin_frame(double t0, double t1, const std::vector<LevelFields>& fields) {
   near_tools(t0, t1, fields, candidates_);
+}
+
+void SkinContact::restore_candidates(std::vector<std::vector<int>> candidates) {
+  if (candidates.size() != tools_.size())
+    throw std::invalid_argument("SkinContact::restore_candidates: " +
+                                std::to_string(candidates.size()) + " tools, not " +
+                                std::to_string(tools_.size()));
+  const int n = static_cast<int>(skin_.rest.size());
+  for (const std::vector<int>& c : candidates)
+    for (int s : c)
+      if (s < 0 || s >= n)
+        throw std::invalid_argument("SkinContact::restore_candidates: skin vertex " +
+                                    std::to_string(s) + " of " + std::to_string(n));
+  candidates_ = std::move(candidates);
 }
 
 Vec3 SkinContact::penalty(int k, const ToolPose& pose, int s,

@@ -66,6 +66,9 @@ class SkinContact {
   const SkinMap& map() const { return map_; }
   /// Per tool, the skin vertices of the frame's broad phase (sorted).
   const std::vector<std::vector<int>>& candidates() const { return candidates_; }
+  /// A checkpoint's broad phase (per tool, sorted skin vertices), as begin_frame() left it;
+  /// throws std::invalid_argument on a tool count or vertex out of range.
+  void restore_candidates(std::vector<std::vector<int>> candidates);
   /// The penalty of every skin vertex (largest over the tools), for the stable step.
   const SkinPenalty& penalty() const { return penalty_; }
   /// Contact force on each skin vertex at the last apply() (N).

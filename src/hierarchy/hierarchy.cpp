@@ -1,6 +1,7 @@
 #include "hierarchy/hierarchy.hpp"
 
 #include <sstream>
+#include <stdexcept>
 
 namespace mrsim {
 
@@ -31,6 +32,29 @@ NodeState Hierarchy::state(int l, int p) const {
   if (l == 0 || f.active_ref[p] > 0) return NodeState::Active;
   if (f.ghost_ref[p] > 0 || f.support[p]) return NodeState::GhostIface;
   return NodeState::Inactive;
+}
+
+void Hierarchy::restore(std::vector<HierarchyCounters> counters) {
+  if (counters.size() != flags_.size())
+    throw std::invalid_argument("Hierarchy::restore: " + std::to_string(counters.size()) +
+                                " levels for a hierarchy of " + std::to_string(flags_.size()));
+  for (size_t l = 0; l < flags_.size(); ++l) {
+    const HierarchyCounters& c = counters[l];
+    const size_t n = flags_[l].subdivided.size();
+    if (c.subdivided.size() != n || c.support.size() != n || c.active_ref.size() != n ||
+        c.ghost_ref.size() != n)
+      throw std::invalid_argument("Hierarchy::restore: level " + std::to_string(l) +
+                                  " counters do not have one entry per point");
+  }
+  std::swap(flags_, counters);
+  if (const std::vector<std::string> broken = check_invariants(); !broken.empty()) {
+    std::swap(flags_, counters);  // refused: the hierarchy stays as it was
+    throw std::runtime_error("Hierarchy::restore: the counters break an invariant: " +
+                             broken.front());
+  }
+  touched_.clear();
+  for (int l = 0; l < num_levels(); ++l)
+    for (int p = 0; p < num_points(l); ++p) touched_.emplace_back(l, p);
 }
 
 bool Hierarchy::can_split(int l, int p) const {

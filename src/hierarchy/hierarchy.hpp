@@ -19,6 +19,12 @@ enum class NodeState : std::int8_t {
   GhostIface,  // interface ghost: interpolates from its parent tet (coarser level)
 };
 
+/// The per-point counters of one level that every status derives from (method.md §4.2).
+struct HierarchyCounters {
+  std::vector<std::uint8_t> subdivided, support;
+  std::vector<int> active_ref, ghost_ref;
+};
+
 class Hierarchy {
  public:
   /// Initial state: every level-0 point active, nothing else.
@@ -48,15 +54,19 @@ class Hierarchy {
 
   std::int64_t count(int level, NodeState s) const;
 
+  /// Level l's counters, for a checkpoint.
+  const HierarchyCounters& counters(int level) const { return flags_[level]; }
+  /// Replaces every level's counters with a checkpoint's: every point counts as touched. Throws
+  /// std::invalid_argument when the sizes do not match the levels, std::runtime_error when the
+  /// result breaks an invariant of §4.9 (a checkpoint of another hierarchy).
+  void restore(std::vector<HierarchyCounters> counters);
+
   /// Points whose status may have changed since the last call (duplicates possible), so the
   /// working lists are updated in O(changes) rather than O(all points).
   std::vector<std::pair<int, int>> take_touched() { return std::exchange(touched_, {}); }
 
  private:
-  struct Flags {
-    std::vector<std::uint8_t> subdivided, support;
-    std::vector<int> active_ref, ghost_ref;
-  };
+  using Flags = HierarchyCounters;
   void ensure_resolvable(int level, int ghost, std::vector<std::pair<int, int>>* woken);
   void check_point(int l, int p, std::vector<std::string>& out) const;
 

@@ -46,10 +46,15 @@ hsize_t chunk_rows_for(hsize_t row_bytes, hsize_t max_rows) {
 }
 
 ExtendibleDataset::ExtendibleDataset(hid_t parent, const std::string& parent_path,
-                                     const ExtendibleSpec& spec, const std::string& file)
+                                     const ExtendibleSpec& spec, const std::string& file,
+                                     Mode mode)
     : row_shape_(spec.row_shape),
       path_(parent_path == "/" ? "/" + spec.name : parent_path + "/" + spec.name),
       file_(file) {
+  if (mode == Mode::Reopen) {
+    open_existing(parent, spec);
+    return;
+  }
   Handle space = empty_space(spec, where());
   Handle properties = creation_properties(spec, where());
   dataset_ = checked(H5Dcreate2(parent, spec.name.c_str(), spec.file_type, space.get(),
@@ -59,6 +64,31 @@ ExtendibleDataset::ExtendibleDataset(hid_t parent, const std::string& parent_pat
   if (!spec.description.empty()) {
     set_string_attribute(dataset_.get(), "description", spec.description, where());
   }
+}
+
+void ExtendibleDataset::open_existing(hid_t parent, const ExtendibleSpec& spec) {
+  dataset_ = checked(H5Dopen2(parent, spec.name.c_str(), H5P_DEFAULT), H5Dclose, where(),
+                     "open dataset");
+  Handle space = checked(H5Dget_space(dataset_.get()), H5Sclose, where(), "get dataspace");
+  std::vector<hsize_t> dims(spec.row_shape.size() + 1);
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  bool fits = rank == static_cast<int>(dims.size());
+  if (fits) {
+    check(H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr), where(), "read extent");
+    fits = std::equal(spec.row_shape.begin(), spec.row_shape.end(), dims.begin() + 1);
+  }
+  if (!fits) throw_error(where(), "append to it: its rows are not those this run writes");
+  rows_ = dims[0];
+}
+
+void ExtendibleDataset::truncate(hsize_t rows) {
+  if (rows > rows_)
+    throw_error(where(), "keep " + std::to_string(rows) + " rows: it holds " +
+                             std::to_string(rows_));
+  std::vector<hsize_t> extent{rows};
+  extent.insert(extent.end(), row_shape_.begin(), row_shape_.end());
+  check(H5Dset_extent(dataset_.get(), extent.data()), where(), "truncate dataset");
+  rows_ = rows;
 }
 
 hsize_t ExtendibleDataset::row_size() const {

@@ -27,10 +27,12 @@ struct ExtendibleSpec {
 class ExtendibleDataset {
  public:
   ExtendibleDataset() = default;
-  /// Creates `spec.name` under `parent` with zero rows. `file` and `parent_path` only name
-  /// things in error messages.
+  /// Create: makes `spec.name` under `parent` with zero rows (RunError if it exists). Reopen:
+  /// opens it with its rows (a log reopened to resume a run; its row shape must be the spec's).
+  /// `file` and `parent_path` only name things in error messages.
+  enum class Mode { Create, Reopen };
   ExtendibleDataset(hid_t parent, const std::string& parent_path, const ExtendibleSpec& spec,
-                    const std::string& file);
+                    const std::string& file, Mode mode = Mode::Create);
 
   /// Appends `rows` rows read from `data` (row-major, `memory_type` elements).
   void append(const void* data, hid_t memory_type, hsize_t rows);
@@ -47,6 +49,9 @@ class ExtendibleDataset {
   }
 
   hsize_t rows() const { return rows_; }
+  /// Keeps the first `rows` rows (a resumed run drops what a killed run wrote after its
+  /// checkpoint). Throws RunError when there are fewer.
+  void truncate(hsize_t rows);
   hsize_t row_size() const;
   hid_t id() const { return dataset_.get(); }
   const std::string& path() const { return path_; }
@@ -55,6 +60,7 @@ class ExtendibleDataset {
 
  private:
   Where where() const { return {file_, path_}; }
+  void open_existing(hid_t parent, const ExtendibleSpec& spec);
   Handle dataset_;
   std::vector<hsize_t> row_shape_;
   hsize_t rows_ = 0;

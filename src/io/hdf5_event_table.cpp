@@ -22,21 +22,22 @@ ExtendibleSpec event_spec(const char* name, hid_t file_type, const char* descrip
 
 EventTable::EventTable(hid_t file_id, const std::string& file)
     : file_(file),
-      group_(create_group(file_id, "events", {file_, "/events"})),
+      group_(open_or_create_group(file_id, "events", {file_, "/events"}, created_)),
       string_type_(utf8_string_type({file_, "/events"})) {
   const hid_t g = group_.get();
+  const auto mode = created_ ? ExtendibleDataset::Mode::Create : ExtendibleDataset::Mode::Reopen;
   frame_ = {g, "/events",
             event_spec("frame", TypeOf<std::int32_t>::file(), "frame during which it happened"),
-            file_};
+            file_, mode};
   kind_ = {g, "/events",
            event_spec("kind", string_type_.get(),
                       "split, merge, gc, time_level or a diagnostic name"),
-           file_};
+           file_, mode};
   level_ = {g, "/events", event_spec("level", TypeOf<std::int32_t>::file(), "level index"),
-            file_};
+            file_, mode};
   point_ = {g, "/events",
             event_spec("point", TypeOf<std::int64_t>::file(), "point index in its level, -1 if none"),
-            file_};
+            file_, mode};
 }
 
 void EventTable::add(int frame, const std::string& kind, int level, long long point) {
@@ -60,6 +61,10 @@ void EventTable::write_pending() {
   pending_kind_.clear();
   pending_level_.clear();
   pending_point_.clear();
+}
+
+void EventTable::truncate(hsize_t rows) {
+  for (ExtendibleDataset* d : {&frame_, &kind_, &level_, &point_}) d->truncate(rows);
 }
 
 void EventTable::close() {

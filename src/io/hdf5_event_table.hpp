@@ -15,16 +15,20 @@ namespace mrsim::h5 {
 
 class EventTable {
  public:
+  /// Creates /events, or opens it when it exists (a log reopened to resume a run).
   EventTable(hid_t file_id, const std::string& file);
 
   void add(int frame, const std::string& kind, int level, long long point);
   /// Writes the buffered events (if any) and empties the buffer.
   void write_pending();
   hsize_t rows() const { return frame_.rows(); }
+  /// Keeps the first `rows` events (nothing may be pending).
+  void truncate(hsize_t rows);
   void close();
 
  private:
   std::string file_;
+  bool created_ = true;
   Handle group_;
   Handle string_type_;
   ExtendibleDataset frame_, kind_, level_, point_;

@@ -67,60 +67,64 @@ void append_one(ExtendibleDataset& dataset, const T& value) {
 FrameTable::FrameTable(hid_t file_id, std::size_t levels,
                        const std::vector<double>& time_level_steps, std::size_t tools,
                        const std::string& file)
-    : file_(file), group_(create_group(file_id, "frames", {file_, "/frames"})),
-      time_levels_count_(time_level_steps.size()), tools_count_(tools) {
+    : file_(file), time_levels_count_(time_level_steps.size()), tools_count_(tools) {
+  bool created = true;
+  group_ = open_or_create_group(file_id, "frames", {file_, "/frames"}, created);
   const hid_t g = group_.get();
-  write_static_dataset(g, "time_level_step", std::span<const double>(time_level_steps),
-                       {time_level_steps.size()}, "s", {file_, "/frames/time_level_step"});
+  const auto mode = created ? ExtendibleDataset::Mode::Create : ExtendibleDataset::Mode::Reopen;
+  if (created)
+    write_static_dataset(g, "time_level_step", std::span<const double>(time_level_steps),
+                         {time_level_steps.size()}, "s", {file_, "/frames/time_level_step"});
   time_levels_ = {g, "/frames",
                   per_level_spec("time_levels", time_levels_count_,
                                  "integrated particles per time level at the end of the frame; "
                                  "column k steps time_level_step[k]"),
-                  file_};
+                  file_, mode};
   time_level_evaluations_ = {g, "/frames",
                              per_level_spec("time_level_evaluations", time_levels_count_,
                                             "cumulative point-force evaluations per time level"),
-                             file_};
-  time_ = {g, "/frames", scalar_spec<double>("time", "s", "simulated time of the frame"), file_};
+                             file_, mode};
+  time_ = {g, "/frames", scalar_spec<double>("time", "s", "simulated time of the frame"), file_, mode};
   kinetic_energy_ = {g, "/frames",
-                     scalar_spec<double>("kinetic_energy", "J", "sum of m v^2 / 2"), file_};
+                     scalar_spec<double>("kinetic_energy", "J", "sum of m v^2 / 2"), file_, mode};
   elastic_energy_ = {g, "/frames",
-                     scalar_spec<double>("elastic_energy", "J", "strain energy"), file_};
+                     scalar_spec<double>("elastic_energy", "J", "strain energy"), file_, mode};
   wall_time_ = {g, "/frames",
                 scalar_spec<double>("wall_time", "s", "wall clock spent simulating this frame"),
-                file_};
+                file_, mode};
   ExtendibleSpec parts = scalar_spec<double>(
       "wall_time_parts", "s",
       "wall clock of the frame per task (column names in attribute `names`; they sum to the "
       "frame's whole wall time, output included; docs/output.md)");
   parts.row_shape = {kTaskCount};
   parts.chunk_rows = chunk_rows_for(kTaskCount * sizeof(double), kScalarChunkRows);
-  wall_time_parts_ = {g, "/frames", parts, file_};
-  set_string_list_attribute(wall_time_parts_.id(), "names", kTaskNames,
-                            {file_, "/frames/wall_time_parts"});
+  wall_time_parts_ = {g, "/frames", parts, file_, mode};
+  if (created)
+    set_string_list_attribute(wall_time_parts_.id(), "names", kTaskNames,
+                              {file_, "/frames/wall_time_parts"});
   stable_step_ = {g, "/frames",
                   scalar_spec<double>("stable_step", "s",
                                       "smallest stable step estimate of the active points at the "
                                       "end of the frame (docs/integrators.md)"),
-                  file_};
+                  file_, mode};
   step_ = {g, "/frames",
            scalar_spec<double>("step", "s", "finest step the frame took (frame_dt / substeps, or "
                                             "the finest time level)"),
-           file_};
-  active_ = {g, "/frames", per_level_spec("active", levels, "active points per level"), file_};
-  ghosts_ = {g, "/frames", per_level_spec("ghosts", levels, "ghost points per level"), file_};
+           file_, mode};
+  active_ = {g, "/frames", per_level_spec("active", levels, "active points per level"), file_, mode};
+  ghosts_ = {g, "/frames", per_level_spec("ghosts", levels, "ghost points per level"), file_, mode};
   force_evaluations_ = {g, "/frames",
                         per_level_spec("force_evaluations", levels,
                                        "cumulative point-force evaluations per level"),
-                        file_};
+                        file_, mode};
   support_reaction_ = {g, "/frames",
                        vector_spec("support_reaction", "N",
                                    "force the fixed points exert on the body, at the last force "
                                    "evaluation of the frame"),
-                       file_};
-  if (tools > 0) tool_force_.emplace(g, "/frames", tool_force_spec(tools), file_);
+                       file_, mode};
+  if (tools > 0) tool_force_.emplace(g, "/frames", tool_force_spec(tools), file_, mode);
   frame_ = {g, "/frames",
-            scalar_spec<std::int32_t>("frame", "", "frame index (frame_NNNNNN.vtm)"), file_};
+            scalar_spec<std::int32_t>("frame", "", "frame index (frame_NNNNNN.vtm)"), file_, mode};
 }
 
 void FrameTable::append(const FrameRecord& record) {
@@ -141,14 +145,19 @@ void FrameTable::append(const FrameRecord& record) {
   append_one(frame_, static_cast<std::int32_t>(record.frame));
 }
 
+std::array<ExtendibleDataset*, 14> FrameTable::datasets() {
+  return {&time_,   &kinetic_energy_,   &elastic_energy_,   &wall_time_,        &wall_time_parts_,
+          &stable_step_, &step_,         &active_,           &ghosts_,           &force_evaluations_,
+          &support_reaction_, &time_levels_, &time_level_evaluations_, &frame_};
+}
+
+void FrameTable::truncate(hsize_t rows) {
+  for (ExtendibleDataset* d : datasets()) d->truncate(rows);
+  if (tool_force_) tool_force_->truncate(rows);
+}
+
 void FrameTable::close() {
-  for (ExtendibleDataset* d : {&time_, &kinetic_energy_, &elastic_energy_, &wall_time_,
-                               &wall_time_parts_,
-                               &stable_step_, &step_, &active_,
-                               &ghosts_, &force_evaluations_, &support_reaction_, &time_levels_,
-                               &time_level_evaluations_, &frame_}) {
-    d->close();
-  }
+  for (ExtendibleDataset* d : datasets()) d->close();
   if (tool_force_) tool_force_->close();
   check(group_.close(), {file_, "/frames"}, "close group");
 }

@@ -2,6 +2,7 @@
 // /frames in log.h5: one row per written frame (time, energies, wall time, per-level counters).
 #include <hdf5.h>
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,7 +15,8 @@ namespace mrsim::h5 {
 class FrameTable {
  public:
   /// `time_level_steps`: the step (s) of each column of /frames/time_levels. With `tools`
-  /// > 0, /frames/tool_force [F, tools, 3] exists too.
+  /// > 0, /frames/tool_force [F, tools, 3] exists too. Opens /frames when it exists (a log
+  /// reopened to resume a run).
   FrameTable(hid_t file_id, std::size_t levels, const std::vector<double>& time_level_steps,
              std::size_t tools, const std::string& file);
   std::size_t time_levels() const { return time_levels_count_; }
@@ -24,9 +26,12 @@ class FrameTable {
   /// frames whose every row was written (what a reader of a killed run should trust).
   void append(const FrameRecord& record);
   hsize_t rows() const { return frame_.rows(); }
+  /// Keeps the first `rows` frames of every dataset.
+  void truncate(hsize_t rows);
   void close();
 
  private:
+  std::array<ExtendibleDataset*, 14> datasets();  // every one but tool_force_, frame_ last
   std::string file_;
   Handle group_;
   ExtendibleDataset time_, kinetic_energy_, elastic_energy_, wall_time_, stable_step_, step_;

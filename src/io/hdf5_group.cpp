@@ -19,4 +19,12 @@ Handle create_group(hid_t parent, const std::string& name, Where where) {
                  H5Gclose, where, "create group");
 }
 
+Handle open_or_create_group(hid_t parent, const std::string& name, Where where, bool& created) {
+  const htri_t exists = H5Lexists(parent, name.c_str(), H5P_DEFAULT);
+  check(exists, where, "look up group");
+  created = exists == 0;
+  if (created) return create_group(parent, name, where);
+  return checked(H5Gopen2(parent, name.c_str(), H5P_DEFAULT), H5Gclose, where, "open group");
+}
+
 }  // namespace mrsim::h5

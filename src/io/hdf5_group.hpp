@@ -10,6 +10,9 @@
 namespace mrsim::h5 {
 
 Handle create_group(hid_t parent, const std::string& name, Where where);
+/// Opens group `name` when it exists (a log reopened to resume a run), creates it otherwise;
+/// `created` says which.
+Handle open_or_create_group(hid_t parent, const std::string& name, Where where, bool& created);
 
 /// Group creation properties without time stamps (datasets use the same idea in their own
 /// creation properties, see no_time_stamps).

@@ -45,10 +45,16 @@ ExtendibleSpec status_spec(std::size_t points) {
 
 LevelGroup::LevelGroup(hid_t levels_group, int level, const TetMesh& mesh, const std::string& file)
     : path_("/levels/level_" + std::to_string(level)), file_(file), points_(mesh.points.size()) {
-  group_ = create_group(levels_group, "level_" + std::to_string(level), {file_, path_});
-  write_rest_positions(group_.get(), path_, mesh, file_);
-  write_tets(group_.get(), path_, mesh, file_);
-  status_ = ExtendibleDataset(group_.get(), path_, status_spec(points_), file_);
+  bool created = true;
+  group_ = open_or_create_group(levels_group, "level_" + std::to_string(level), {file_, path_},
+                                created);
+  if (created) {
+    write_rest_positions(group_.get(), path_, mesh, file_);
+    write_tets(group_.get(), path_, mesh, file_);
+  }
+  status_ = ExtendibleDataset(group_.get(), path_, status_spec(points_), file_,
+                              created ? ExtendibleDataset::Mode::Create
+                                      : ExtendibleDataset::Mode::Reopen);
 }
 
 void LevelGroup::close() {

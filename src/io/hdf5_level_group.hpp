@@ -14,11 +14,14 @@ namespace mrsim::h5 {
 
 class LevelGroup {
  public:
-  /// Creates level_`level` under the /levels group and writes rest_positions and tets.
+  /// Creates level_`level` under the /levels group and writes rest_positions and tets; opens
+  /// it when it exists (a log reopened to resume a run).
   LevelGroup(hid_t levels_group, int level, const TetMesh& mesh, const std::string& file);
 
   std::size_t points() const { return points_; }
   void append_status(std::span<const std::int8_t> status) { status_.append(status); }
+  void truncate(hsize_t frames) { status_.truncate(frames); }
+  hsize_t rows() const { return status_.rows(); }
   void close();
 
  private:

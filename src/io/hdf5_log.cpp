@@ -1,10 +1,12 @@
 #include "io/hdf5_log.hpp"
 
+#include <algorithm>
 #include <exception>
 #include <optional>
 #include <stdexcept>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/log.hpp"
 #include "io/frame_data_check.hpp"
 #include "io/hdf5_attributes.hpp"
@@ -13,6 +15,7 @@
 #include "io/hdf5_frame_table.hpp"
 #include "io/hdf5_group.hpp"
 #include "io/hdf5_level_group.hpp"
+#include "io/hdf5_read.hpp"
 #include "io/hdf5_tool_group.hpp"
 
 namespace mrsim {
@@ -28,6 +31,23 @@ h5::Handle create_file(const std::string& file) {
   // "open for writing" mark in the superblock, so the file of a killed run opens as is.
   return h5::checked(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
                      {file, ""}, "create file");
+}
+
+h5::Handle open_file(const std::string& file) {
+  h5::silence_automatic_error_printing();
+  return h5::checked(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, {file, ""},
+                     "open file to resume the run");
+}
+
+// The log of the same run: same format, and the levels, time levels and tools of the header.
+void check_resumable(hid_t file_id, const Hdf5LogHeader& header, const std::string& file) {
+  const h5::Where root{file, "/"};
+  const std::int64_t version = h5::read_int64_attribute(file_id, "format_version", root);
+  if (version != kLogFormatVersion)
+    throw RunError(file + ": log format version " + std::to_string(version) + ", not " +
+                   std::to_string(kLogFormatVersion));
+  if (h5::read_string_attribute(file_id, "scenario", root) != header.scenario_yaml)
+    throw RunError(file + ": written for another scenario than the one resumed");
 }
 
 void write_header_attributes(hid_t file_id, const Hdf5LogHeader& header, const std::string& file) {
@@ -51,12 +71,19 @@ struct Hdf5Log::Impl {
   std::optional<h5::EventTable> events;
   std::vector<h5::ToolGroup> tools;
 
-  Impl(const std::filesystem::path& path, const Hdf5LogHeader& header)
-      : file(path.string()), file_id(create_file(file)) {
-    write_header_attributes(file_id.get(), header, file);
-    levels_group = h5::create_group(file_id.get(), "levels", {file, "/levels"});
-    h5::set_int64_attribute(levels_group.get(), "count",
-                            static_cast<std::int64_t>(header.levels.size()), {file, "/levels"});
+  // keep == nullptr: a new log; else the existing one, cut to `keep`.
+  Impl(const std::filesystem::path& path, const Hdf5LogHeader& header, const Hdf5LogRows* keep)
+      : file(path.string()), file_id(keep ? open_file(file) : create_file(file)) {
+    bool created = true;
+    if (keep) {
+      check_resumable(file_id.get(), header, file);
+    } else {
+      write_header_attributes(file_id.get(), header, file);
+    }
+    levels_group = h5::open_or_create_group(file_id.get(), "levels", {file, "/levels"}, created);
+    if (created)
+      h5::set_int64_attribute(levels_group.get(), "count",
+                              static_cast<std::int64_t>(header.levels.size()), {file, "/levels"});
     for (std::size_t k = 0; k < header.levels.size(); ++k) {
       if (header.levels[k] == nullptr) throw std::invalid_argument("Hdf5Log: level without mesh");
       levels.emplace_back(levels_group.get(), static_cast<int>(k), *header.levels[k], file);
@@ -72,7 +99,27 @@ struct Hdf5Log::Impl {
       tools.emplace_back(file_id.get(), static_cast<int>(k), header.tools[k].name,
                          header.tools[k].shape, file);
     }
+    if (keep) truncate(*keep);
     flush();  // the header alone is already a valid, readable file
+  }
+
+  void truncate(const Hdf5LogRows& keep) {
+    if (keep.tool_samples.size() != tools.size())
+      throw RunError(file + ": " + std::to_string(keep.tool_samples.size()) +
+                     " tool sample counts for " + std::to_string(tools.size()) + " tools");
+    const auto rows = [](std::int64_t n) { return static_cast<hsize_t>(std::max<std::int64_t>(n, 0)); };
+    // Every table checked before any is cut: a refused log stays as it was.
+    bool enough = frames->rows() >= rows(keep.frames) && events->rows() >= rows(keep.events);
+    for (const h5::LevelGroup& level : levels) enough = enough && level.rows() >= rows(keep.frames);
+    for (std::size_t k = 0; k < tools.size(); ++k)
+      enough = enough && tools[k].rows() >= rows(keep.tool_samples[k]);
+    if (!enough)
+      throw RunError(file + " holds fewer frames, events or tool samples than the checkpoint "
+                     "counts: it is not the log the checkpoint was written with");
+    for (h5::LevelGroup& level : levels) level.truncate(rows(keep.frames));
+    frames->truncate(rows(keep.frames));
+    events->truncate(rows(keep.events));
+    for (std::size_t k = 0; k < tools.size(); ++k) tools[k].truncate(rows(keep.tool_samples[k]));
   }
 
   void flush() {
@@ -91,7 +138,11 @@ struct Hdf5Log::Impl {
 };
 
 Hdf5Log::Hdf5Log(const std::filesystem::path& file, const Hdf5LogHeader& header)
-    : impl_(std::make_unique<Impl>(file, header)) {}
+    : impl_(std::make_unique<Impl>(file, header, nullptr)) {}
+
+Hdf5Log::Hdf5Log(const std::filesystem::path& file, const Hdf5LogHeader& header,
+                 const Hdf5LogRows& keep)
+    : impl_(std::make_unique<Impl>(file, header, &keep)) {}
 
 Hdf5Log::~Hdf5Log() {
   try {
@@ -130,6 +181,16 @@ void Hdf5Log::append_tool_samples(int tool, const ToolSamples& samples) {
   // No flush here: a frame's samples become durable with the frame's row, so a killed run
   // holds the samples of every complete frame at the cost of one flush per frame only.
   impl_->tools[static_cast<std::size_t>(tool)].append(samples);
+}
+
+Hdf5LogRows Hdf5Log::rows() const {
+  if (!impl_) throw std::logic_error("Hdf5Log::rows after close");
+  Hdf5LogRows r;
+  r.frames = static_cast<std::int64_t>(impl_->frames->rows());
+  r.events = static_cast<std::int64_t>(impl_->events->rows());
+  for (const h5::ToolGroup& tool : impl_->tools)
+    r.tool_samples.push_back(static_cast<std::int64_t>(tool.rows()));
+  return r;
 }
 
 void Hdf5Log::close() {

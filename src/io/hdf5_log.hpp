@@ -3,6 +3,7 @@
 // extendible, appended and flushed every frame so a killed run leaves a readable file.
 #include <filesystem>
 #include <memory>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -31,9 +32,22 @@ struct Hdf5LogHeader {
   std::vector<ToolLogInfo> tools = {};
 };
 
+/// How many rows of each table of an existing log belong to the frames a resumed run keeps.
+struct Hdf5LogRows {
+  std::int64_t frames = 0;  // rows of /frames/* and /levels/level_k/status
+  std::int64_t events = 0;  // rows of /events/*
+  std::vector<std::int64_t> tool_samples;  // rows of /tool, /tool_k
+};
+
 class Hdf5Log {
  public:
   Hdf5Log(const std::filesystem::path& file, const Hdf5LogHeader& header);
+  /// Reopens the log of a run to go on with it (mrsim run --resume): the header must describe
+  /// the same levels, time levels and tools; every table is cut to `keep` rows (what a run
+  /// killed after its checkpoint wrote beyond is dropped); the header attributes, start_time
+  /// included, stay those of the run's start. Throws RunError when the file is not such a log
+  /// or holds fewer rows.
+  Hdf5Log(const std::filesystem::path& file, const Hdf5LogHeader& header, const Hdf5LogRows& keep);
   ~Hdf5Log();
   Hdf5Log(const Hdf5Log&) = delete;
   Hdf5Log& operator=(const Hdf5Log&) = delete;
@@ -47,6 +61,8 @@ class Hdf5Log {
   /// throw std::invalid_argument. Written at once, made durable by the next append_frame's
   /// flush.
   void append_tool_samples(int tool, const ToolSamples& samples);
+  /// Rows written so far (events still buffered excluded): what a checkpoint records.
+  Hdf5LogRows rows() const;
   void close();
 
  private:

@@ -51,21 +51,25 @@ ToolGroup::ToolGroup(hid_t file_id, int tool, std::string_view name, std::string
     : file_(file) {
   const std::string group_name = tool_group_name(tool);
   path_ = "/" + group_name;
-  group_ = create_group(file_id, group_name, {file_, path_});
-  set_string_attribute(group_.get(), "name", name, {file_, path_});
-  set_string_attribute(group_.get(), "shape", shape, {file_, path_});
+  bool created = true;
+  group_ = open_or_create_group(file_id, group_name, {file_, path_}, created);
+  if (created) {
+    set_string_attribute(group_.get(), "name", name, {file_, path_});
+    set_string_attribute(group_.get(), "shape", shape, {file_, path_});
+  }
   const hid_t g = group_.get();
-  time_ = {g, path_, sample_spec<double>("time", 1, "s", "simulated time of the step"), file_};
+  const auto mode = created ? ExtendibleDataset::Mode::Create : ExtendibleDataset::Mode::Reopen;
+  time_ = {g, path_, sample_spec<double>("time", 1, "s", "simulated time of the step"), file_, mode};
   position_ = {g, path_,
-               sample_spec<double>("position", 3, "m", "tool origin in the world frame"), file_};
+               sample_spec<double>("position", 3, "m", "tool origin in the world frame"), file_, mode};
   orientation_ = {g, path_,
                   sample_spec<double>("orientation", 4, "",
                                       "unit quaternion w, x, y, z: tool frame to world frame"),
-                  file_};
+                  file_, mode};
   force_ = {g, path_,
-            sample_spec<double>("force", 3, "N", "force the object exerts on the tool"), file_};
+            sample_spec<double>("force", 3, "N", "force the object exerts on the tool"), file_, mode};
   contacts_ = {g, path_,
-               sample_spec<std::int32_t>("contacts", 1, "", "skin vertices in contact"), file_};
+               sample_spec<std::int32_t>("contacts", 1, "", "skin vertices in contact"), file_, mode};
 }
 
 void ToolGroup::append(const ToolSamples& samples) {
@@ -75,6 +79,11 @@ void ToolGroup::append(const ToolSamples& samples) {
   force_.append(std::span<const double>(flatten<Vec3, 3>(samples.force)));
   contacts_.append(samples.contacts);
   time_.append(samples.time);
+}
+
+void ToolGroup::truncate(hsize_t rows) {
+  for (ExtendibleDataset* d : {&time_, &position_, &orientation_, &force_, &contacts_})
+    d->truncate(rows);
 }
 
 void ToolGroup::close() {

@@ -18,7 +18,7 @@ std::string tool_group_name(int tool);
 class ToolGroup {
  public:
   /// Creates the group of tool `tool` under the file's root, with attributes `name` and
-  /// `shape` and five empty datasets.
+  /// `shape` and five empty datasets; opens it when it exists (a log reopened to resume a run).
   ToolGroup(hid_t file_id, int tool, std::string_view name, std::string_view shape,
             const std::string& file);
 
@@ -26,6 +26,7 @@ class ToolGroup {
   /// so its length counts the samples whose every column was written.
   void append(const ToolSamples& samples);
   hsize_t rows() const { return time_.rows(); }
+  void truncate(hsize_t rows);
   void close();
 
  private:

@@ -21,8 +21,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // What a run writes into its folder (docs/output.md "Layout").
-constexpr std::array<const char*, 5> kOutputs = {"frames", "frames.pvd", "log.h5", "summary.json",
-                                                 "scenario.yaml"};
+constexpr std::array<const char*, 7> kOutputs = {
+    "frames", "frames.pvd", "log.h5", "summary.json", "scenario.yaml", "checkpoint.h5",
+    "checkpoint.h5.tmp"};
 
 std::string holder_of(int fd) {
   std::array<char, 32> pid{};
@@ -56,7 +57,8 @@ void clear_previous_run(const fs::path& dir, const std::vector<fs::path>& inputs
 
 }  // namespace
 
-RunFolder::RunFolder(const fs::path& dir, const std::vector<fs::path>& inputs) : dir_(dir) {
+RunFolder::RunFolder(const fs::path& dir, const std::vector<fs::path>& inputs, Mode mode)
+    : dir_(dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw RunError("cannot create " + dir.string() + ": " + ec.message());
@@ -78,7 +80,13 @@ RunFolder::RunFolder(const fs::path& dir, const std::vector<fs::path>& inputs) :
     // The pid is only a courtesy for the message above; the lock is what counts.
   }
   try {
-    clear_previous_run(dir, inputs);
+    if (mode == Mode::Resume) {
+      // The run goes on: its outputs stay; summary.json is written again when it ends.
+      fs::remove(dir / "summary.json", ec);
+      fs::remove(dir / "checkpoint.h5.tmp", ec);
+    } else {
+      clear_previous_run(dir, inputs);
+    }
   } catch (...) {
     ::close(fd_);
     fd_ = -1;

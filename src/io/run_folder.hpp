@@ -3,7 +3,7 @@
 // locked (flock on OUTDIR/.mrsim.lock) before anything is written: a second run into a folder
 // whose run is still going exits 2 and touches nothing. A folder that holds a finished run is
 // taken over cleanly: the outputs mrsim writes there (frames/, frames.pvd, log.h5,
-// summary.json, scenario.yaml) are removed first, so that no stale frame of the old run stays
+// summary.json, scenario.yaml, checkpoint.h5) are removed first, so that no stale frame of the old run stays
 // beside the new ones. Other files of the folder are left alone, and so is any input of the run
 // (`mrsim run scenario.yaml -o .` must not delete its own scenario.yaml: that is refused). The
 // lock is released when the process ends, however it ends (the kernel drops it), so a killed
@@ -19,7 +19,11 @@ class RunFolder {
   /// Creates `dir` if needed, locks it, then removes the previous run's outputs. Throws
   /// InputError when another process holds the lock or when an output to remove is (or holds)
   /// one of `inputs`, RunError when the folder cannot be made or cleared.
-  RunFolder(const std::filesystem::path& dir, const std::vector<std::filesystem::path>& inputs);
+  /// Resume (mrsim run --resume): the folder must exist; its outputs stay (the run goes on
+  /// with them), only summary.json goes, written again when the run ends.
+  enum class Mode { Fresh, Resume };
+  RunFolder(const std::filesystem::path& dir, const std::vector<std::filesystem::path>& inputs,
+            Mode mode = Mode::Fresh);
   ~RunFolder();
   RunFolder(const RunFolder&) = delete;
   RunFolder& operator=(const RunFolder&) = delete;

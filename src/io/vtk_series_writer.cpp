@@ -130,6 +130,31 @@ void VtkSeriesWriter::write_complete(const std::filesystem::path& relative,
   fs::remove(partial, ec);  // empty again; a failure here loses nothing
 }
 
+void VtkSeriesWriter::resume(std::span<const std::pair<int, double>> kept, int last) {
+  namespace fs = std::filesystem;
+  entries_.clear();
+  for (const auto& [index, time] : kept) {
+    const fs::path relative = frame_file(index);
+    if (!fs::is_regular_file(out_dir_ / relative))
+      throw InputError("cannot resume in " + out_dir_.string() + ": " +
+                       relative.generic_string() + " of frame " + std::to_string(index) +
+                       " is missing");
+    entries_.push_back({index, time, relative});
+  }
+  const fs::path frames = out_dir_ / kFramesDir;
+  std::error_code ec;
+  fs::remove_all(frames / kPartialDir, ec);
+  for (const fs::directory_entry& e : fs::directory_iterator(frames, ec)) {
+    int index = -1;
+    const std::string name = e.path().filename().string();
+    if (std::sscanf(name.c_str(), "frame_%d", &index) == 1 && index > last) {
+      fs::remove_all(e.path(), ec);
+      if (ec) throw RunError("cannot remove " + e.path().string() + ": " + ec.message());
+    }
+  }
+  write_pvd();
+}
+
 void VtkSeriesWriter::write_pvd() const {
   std::vector<PvdEntry> pvd;
   pvd.reserve(entries_.size());

@@ -6,6 +6,7 @@
 // temporary file, then rename) so a run killed or failed mid-way leaves a valid series.
 #include <filesystem>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "io/frame_data.hpp"
@@ -24,6 +25,11 @@ class VtkSeriesWriter {
                    const SurfaceFrameView* surface = nullptr,
                    std::span<const ToolFrameView> tools = {});
   int frames_written() const { return static_cast<int>(entries_.size()); }
+  /// Goes on with the series of a run resumed after frame `last` (mrsim run --resume): `kept`
+  /// (index, time) are its frames up to there, each of which must be complete on disk (else
+  /// InputError). Every later frame and any partial one are removed (a run killed after its
+  /// checkpoint wrote them), and frames.pvd lists the kept frames.
+  void resume(std::span<const std::pair<int, double>> kept, int last);
 
  private:
   struct Entry { int index; double time; std::filesystem::path file; };

@@ -110,6 +110,7 @@ struct OutputSpec {
   std::filesystem::path dir;  // output folder
   int every = 1;              // write a VTK frame every N display frames
   bool vtk = true;            // write frames.pvd and frames/
+  int checkpoint_every = 0;   // write checkpoint.h5 every N display frames; 0: only when interrupted
 };
 
 struct Scenario {

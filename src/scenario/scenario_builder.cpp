@@ -130,7 +130,8 @@ std::vector<ToolSpec> tool_specs(const json& resolved, const std::filesystem::pa
 }
 
 OutputSpec output_spec(const json& o) {
-  return {o["dir"].get<std::string>(), o["every"].get<int>(), o["vtk"].get<bool>()};
+  return {o["dir"].get<std::string>(), o["every"].get<int>(), o["vtk"].get<bool>(),
+          o["checkpoint_every"].get<int>()};
 }
 
 }  // namespace

@@ -345,6 +345,7 @@ void HierarchicalSimulation::resolve_loads() {
 // the contacts (they may share points), then add each load at its factor and the contacts.
 void HierarchicalSimulation::update_external(double t) {
   const TaskTimer timer(&tasks_, Task::Contact);
+  external_at_ = t;
   loads_on_support_.setZero();
   for (size_t k = 0; k < loads_.size(); ++k) load_factors_[k] = load_factor(loads_[k].profile, t);
   for (const LoadTarget& target : load_targets_)

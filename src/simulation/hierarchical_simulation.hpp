@@ -15,6 +15,7 @@
 #include "hierarchy/interface_inertia.hpp"
 #include "hierarchy/patch_test_weights.hpp"
 #include "hierarchy/status_lists.hpp"
+#include "io/checkpoint_data.hpp"
 #include "physics/level_model.hpp"
 #include "simulation/level_force_field.hpp"
 #include "simulation/surface_load.hpp"
@@ -92,6 +93,15 @@ class HierarchicalSimulation {
   double step() const;
   /// The per-particle time levels, nullptr when the setup has none.
   const TimeAdaptivity* time_levels() const { return time_levels_.get(); }
+
+  /// The state at a frame boundary, for a checkpoint (simulation/checkpoint_state.cpp).
+  SimulationCheckpoint checkpoint() const;
+  /// Back to a checkpoint's state, on a simulation freshly built from the same scenario: the
+  /// counters and states are taken back, everything derived from the topology is rebuilt by
+  /// the code a run uses, so the run goes on bit for bit as if it had never stopped. Throws
+  /// std::invalid_argument (or std::runtime_error for a broken hierarchy) when the checkpoint
+  /// does not fit this simulation.
+  void restore(const SimulationCheckpoint& checkpoint);
 
   /// Topology changes, applied between steps. After any of them call apply_changes().
   void split(int level, int point);
@@ -184,6 +194,7 @@ class HierarchicalSimulation {
   std::vector<std::vector<int>> fixed_ghosts_;   // those that are ghosts now
   double dt_ = 0;
   double time_ = 0, clock_ = 0;  // clock_: the time positions reach in the step under way
+  double external_at_ = 0;       // time of the last update_external (checkpoints)
   std::vector<SurfaceLoad> loads_;
   std::vector<double> load_factors_;  // per load, at the last update (scratch)
   Vec3 ghosts_on_support_ = Vec3::Zero(), loads_on_support_ = Vec3::Zero();

@@ -1,5 +1,6 @@
 #include "simulation/run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cmath>
@@ -13,6 +14,7 @@
 #include "core/interruption.hpp"
 #include "core/log.hpp"
 #include "hierarchy/level_ownership.hpp"
+#include "io/checkpoint_file.hpp"
 #include "io/hdf5_log.hpp"
 #include "io/run_folder.hpp"
 #include "io/summary_json.hpp"
@@ -20,6 +22,7 @@
 #include "mesh/mesh_reader.hpp"
 #include "mrsim/version.hpp"
 #include "contact/tool_surface.hpp"
+#include "simulation/checkpoint_state.hpp"
 #include "simulation/contact_setup.hpp"
 #include "simulation/divergence.hpp"
 #include "simulation/frame_timing.hpp"
@@ -90,11 +93,21 @@ int frame_count(const TimeSpec& t) {
   return static_cast<int>(frames);
 }
 
-// Everything written per display frame: one block / status row per level.
+// The frames of the VTK series up to frame `last` (index, time), as the run wrote them.
+std::vector<std::pair<int, double>> vtk_frames_up_to(const Scenario& sc, int last) {
+  std::vector<std::pair<int, double>> frames;
+  for (int f = 0; f <= last; f += sc.output.every) frames.emplace_back(f, f * sc.time.frame_dt);
+  return frames;
+}
+
+// Everything written per display frame: one block / status row per level. With `resume`, the
+// run's outputs are taken up where its checkpoint left them.
 class FrameWriter {
  public:
-  FrameWriter(const Scenario& sc, HierarchicalSimulation& sim, const SpaceAdaptivity& adapt)
-      : sc_(sc), sim_(sim), adapt_(adapt), L_(sim.num_levels()) {
+  FrameWriter(const Scenario& sc, HierarchicalSimulation& sim, const SpaceAdaptivity& adapt,
+              const Checkpoint* resume)
+      : sc_(sc), sim_(sim), adapt_(adapt), L_(sim.num_levels()),
+        scenario_text_(resume ? resume->scenario_yaml : resolved_yaml(sc)) {
     status_.resize(L_);
     force_.resize(L_);
     time_level_.resize(L_);
@@ -108,17 +121,33 @@ class FrameWriter {
       meshes.push_back(sim.model(l).mesh);
     }
     std::filesystem::create_directories(sc.output.dir);
-    write_text(sc.output.dir / "scenario.yaml", resolved_yaml(sc));
-    Hdf5LogHeader header{kVersion, kGitRevision, resolved_yaml(sc), utc_now_iso8601(), meshes,
+    if (!resume) write_text(sc.output.dir / "scenario.yaml", scenario_text_);
+    Hdf5LogHeader header{kVersion, kGitRevision, scenario_text_, utc_now_iso8601(), meshes,
                          time_level_steps(sc)};
     if (const SkinContact* c = sim.contact())
       for (int k = 0; k < c->num_tools(); ++k) {
         header.tools.push_back({c->tool(k).name, shape_name(c->tool(k).shape.kind)});
         tool_surfaces_.push_back(tool_surface(c->tool(k).shape));
       }
-    log_ = std::make_unique<Hdf5Log>(sc.output.dir / "log.h5", header);
-    if (sc.output.vtk) vtk_ = std::make_unique<VtkSeriesWriter>(sc.output.dir);
+    if (resume) {
+      const RunCheckpoint& r = resume->run;
+      log_ = std::make_unique<Hdf5Log>(sc.output.dir / "log.h5", header,
+                                       Hdf5LogRows{r.frame + 1, r.log_events, r.log_tool_samples});
+      peak_tool_force_ = r.peak_tool_force;
+      run_parts_ = r.wall_time_parts;
+    } else {
+      log_ = std::make_unique<Hdf5Log>(sc.output.dir / "log.h5", header);
+    }
+    if (sc.output.vtk) {
+      vtk_ = std::make_unique<VtkSeriesWriter>(sc.output.dir);
+      if (resume) vtk_->resume(vtk_frames_up_to(sc, resume->run.frame), resume->run.frame);
+    }
   }
+
+  /// The resolved scenario the run was started with (log.h5, scenario.yaml, checkpoints).
+  const std::string& scenario_text() const { return scenario_text_; }
+  /// Rows of log.h5 written so far.
+  Hdf5LogRows log_rows() const { return log_->rows(); }
 
   /// The frame's row of log.h5 and, when due, its VTK files. `timing` started with the frame:
   /// the output is timed here and the row gets the frame's wall time per task. The row is
@@ -261,6 +290,7 @@ class FrameWriter {
   HierarchicalSimulation& sim_;
   const SpaceAdaptivity& adapt_;
   int L_;
+  std::string scenario_text_;
   std::vector<std::vector<std::int8_t>> status_;
   std::vector<std::vector<Vec3>> force_;
   std::vector<std::vector<std::int32_t>> time_level_;
@@ -287,6 +317,46 @@ struct RunState {
   std::int64_t budget_hold = 0, budget_shed = 0;  // frames over the real-time budget
   int substep_changes = 0;                         // time.adapt_substeps
 };
+
+RunState run_state_of(const RunCheckpoint& r) {
+  RunState st;
+  st.frames_done = r.frame;
+  st.max_displacement = r.max_displacement;
+  st.splits = r.splits;
+  st.merges = r.merges;
+  st.budget_hold = r.budget_hold;
+  st.budget_shed = r.budget_shed;
+  st.substep_changes = r.substep_changes;
+  return st;
+}
+
+// checkpoint.h5 at the end of the frame just written (docs/output.md "Checkpoints").
+void save_checkpoint(const Scenario& sc, const HierarchicalSimulation& sim,
+                     const SpaceAdaptivity& adapt, const FrameWriter& writer, const RunState& st,
+                     int frames, double wall_time) {
+  Checkpoint c;
+  c.mrsim_version = kVersion;
+  c.git_revision = kGitRevision;
+  c.scenario_yaml = writer.scenario_text();
+  c.scenario_source = std::filesystem::absolute(sc.source).lexically_normal().string();
+  RunCheckpoint& r = c.run;
+  r.frame = st.frames_done;
+  r.frames_total = frames;
+  r.max_displacement = st.max_displacement;
+  r.splits = st.splits;
+  r.merges = st.merges;
+  r.budget_hold = st.budget_hold;
+  r.budget_shed = st.budget_shed;
+  r.substep_changes = st.substep_changes;
+  r.peak_tool_force = writer.peak_tool_force();
+  r.wall_time = wall_time;
+  r.wall_time_parts = writer.run_parts();
+  const Hdf5LogRows rows = writer.log_rows();
+  r.log_events = rows.events;
+  r.log_tool_samples = rows.tool_samples;
+  c.simulation = take_checkpoint(sim, adapt);
+  write_checkpoint(sc.output.dir / kCheckpointFile, c);
+}
 
 // time.adapt_substeps: the frame just run took another number of steps than the one before,
 // because the stable step in force changed (docs/integrators.md). An event per change; a line
@@ -379,8 +449,13 @@ Scenario check_scenario_inputs(const Scenario& sc) {
   return with_stable_substeps(sc, pointers(meshes));
 }
 
-RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
-  const auto t0 = Clock::now();
+namespace {
+
+// A run from its start (resume == nullptr) or from a checkpoint of it.
+RunSummary execute(const Scenario& input, const RunOptions& options, const Checkpoint* resume) {
+  const double wall_before = resume ? resume->run.wall_time : 0.0;
+  const auto t0 = Clock::now() - std::chrono::duration_cast<Clock::duration>(
+                                     std::chrono::duration<double>(wall_before));
   const std::vector<TetMesh> meshes = load_meshes(input);
   const Scenario sc = with_stable_substeps(input, pointers(meshes));
   const HierarchySetup setup = hierarchy_setup(sc, pointers(meshes));
@@ -389,21 +464,34 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
   const DivergenceGuard guard =
       DivergenceGuard::for_level(sim.model(0), sc.time.divergence_energy_factor);
   const int frames = frame_count(sc.time);
+  if (resume) {
+    try {
+      restore_checkpoint(resume->simulation, sim, adapt);
+    } catch (const std::exception& e) {
+      throw InputError((sc.output.dir / kCheckpointFile).string() +
+                       " does not fit the run's scenario and meshes: " + e.what());
+    }
+  }
 
-  // The folder is this run's from here on: locked, the previous run's outputs removed.
-  RunFolder folder(sc.output.dir, input_files(sc));
-  RunState st;
+  // The folder is this run's from here on: locked, the previous run's outputs removed (or,
+  // resuming, taken up where the checkpoint left them).
+  RunFolder folder(sc.output.dir, input_files(sc),
+                   resume ? RunFolder::Mode::Resume : RunFolder::Mode::Fresh);
+  RunState st = resume ? run_state_of(resume->run) : RunState{};
   RunSummary sum;
+  sum.steps = sim.steps();
   try {
-    FrameWriter writer(sc, sim, adapt);
+    FrameWriter writer(sc, sim, adapt, resume);
     folder.remember("log.h5");  // open for the whole run: its removal would go unnoticed
     std::vector<HierarchyEvent> events;
     std::vector<TimeLevelChange> changes;
-    adapt.evaluate(sim);
     st.energies = hierarchy_energies(sim);
     FrameTiming timing(sim.task_clock());  // frame 0: its output only
-    writer.write(0, 0.0, 0.0, st.energies, timing);
-    for (int frame = 1; frame <= frames; ++frame) {
+    if (!resume) {
+      adapt.evaluate(sim);
+      writer.write(0, 0.0, 0.0, st.energies, timing);
+    }
+    for (int frame = st.frames_done + 1; frame <= frames; ++frame) {
       timing.restart();
       const auto tf = timing.start();
       changes.clear();
@@ -443,12 +531,18 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
       folder.check_intact();
       writer.write(frame, time, seconds_since(tf), st.energies, timing);
       st.frames_done = frame;
+      const int sig = interruption_signal();
+      // A checkpoint at the interruption, or every checkpoint_every frames (none at the end).
+      if (frame < frames &&
+          (sig != 0 || (sc.output.checkpoint_every > 0 && frame % sc.output.checkpoint_every == 0)))
+        save_checkpoint(sc, sim, adapt, writer, st, frames, seconds_since(t0));
       if (options.progress) options.progress({frame, frames, time, seconds_since(t0)});
-      if (const int sig = interruption_signal(); sig != 0 && frame < frames) {
+      if (sig != 0 && frame < frames) {
         // core/interruption.hpp: the frame is written; stop here, cleanly.
         std::ostringstream os;
         os << "interrupted by " << (sig == SIGINT ? "SIGINT" : "SIGTERM") << " after frame "
-           << frame << " (t = " << time << " s) of " << frames;
+           << frame << " (t = " << time << " s) of " << frames << "; go on with mrsim run --resume "
+           << sc.output.dir.string();
         st.status = "interrupted";
         st.message = os.str();
         writer.event({frame, "interrupted", -1, -1});
@@ -472,6 +566,68 @@ RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
     }
     throw;
   }
+}
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  if (!in) throw InputError("cannot read " + file.string());
+  return ss.str();
+}
+
+// The 1-based line where two texts first differ.
+int first_different_line(const std::string& a, const std::string& b) {
+  const auto [ia, ib] = std::mismatch(a.begin(), a.end(), b.begin(), b.end());
+  return 1 + static_cast<int>(std::count(a.begin(), ia, '\n'));
+}
+
+// What `mrsim run --resume DIR` goes on with: the folder's scenario and its checkpoint, checked
+// to belong together, to this build and to a run that has something left to do.
+std::pair<Scenario, Checkpoint> resumable_run(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  const std::string where = dir.string();
+  if (!fs::is_directory(dir)) throw InputError(where + ": no such run folder to resume");
+  const fs::path yaml = dir / "scenario.yaml";
+  if (!fs::is_regular_file(yaml))
+    throw InputError(where + " holds no run to resume (no scenario.yaml)");
+  if (fs::is_regular_file(dir / "summary.json")) {
+    nlohmann::json summary;
+    try {
+      summary = nlohmann::json::parse(read_text(dir / "summary.json"));
+    } catch (const nlohmann::json::exception&) {  // torn by a crash: the checkpoint decides
+    }
+    if (summary.is_object() && summary.value("status", "") == "completed")
+      throw InputError("the run in " + where + " completed (summary.json): nothing to resume");
+  }
+  Checkpoint c = read_checkpoint(dir / kCheckpointFile);
+  if (c.mrsim_version != kVersion || c.git_revision != kGitRevision)
+    throw InputError((dir / kCheckpointFile).string() + " was written by mrsim " +
+                     c.mrsim_version + " (" + c.git_revision + "); this is mrsim " + kVersion +
+                     " (" + kGitRevision + "): a run goes on exactly only with the build that "
+                     "started it; resume it with that build or run it again");
+  const std::string text = read_text(yaml);
+  if (text != c.scenario_yaml)
+    throw InputError((dir / kCheckpointFile).string() + " belongs to another scenario than " +
+                     yaml.string() + " (they differ from line " +
+                     std::to_string(first_different_line(text, c.scenario_yaml)) + ")");
+  // Read as the file it came from, so that its relative mesh paths mean what they meant.
+  Scenario sc = load_scenario_text(text, c.scenario_source, {"output.dir=" + where});
+  if (c.run.frame >= frame_count(sc.time))
+    throw InputError("the checkpoint in " + where + " is at the run's last frame: nothing to "
+                     "resume");
+  return {std::move(sc), std::move(c)};
+}
+
+}  // namespace
+
+RunSummary run_scenario(const Scenario& input, const RunOptions& options) {
+  return execute(input, options, nullptr);
+}
+
+RunSummary resume_run(const std::filesystem::path& dir, const RunOptions& options) {
+  const auto [sc, checkpoint] = resumable_run(dir);
+  return execute(sc, options, &checkpoint);
 }
 
 }  // namespace mrsim

@@ -5,6 +5,7 @@
 // failure during the run throws RunError after every output of the frames before it is closed
 // and valid (summary.json records the failure).
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 
 #include "scenario/scenario.hpp"
@@ -29,6 +30,13 @@ struct RunSummary {
 };
 
 RunSummary run_scenario(const Scenario& scenario, const RunOptions& options = {});
+
+/// Goes on with the run in `dir` from its checkpoint.h5 (mrsim run --resume; docs/output.md
+/// "Checkpoints and --resume"): the folder's scenario.yaml, the run's log.h5 and frames cut
+/// back to the checkpoint's frame, then the remaining frames, written as the uninterrupted run
+/// would have written them. Throws InputError (before anything is changed) when there is no
+/// checkpoint, when it belongs to another scenario or build, or when the run completed.
+RunSummary resume_run(const std::filesystem::path& dir, const RunOptions& options = {});
 
 /// Loads every mesh of the scenario and checks it against the scenario (fixed regions, loads,
 /// time step): what `mrsim check` does beyond the schema. Returns the scenario with

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 #include <tuple>
 
 #include "physics/laplacian_criterion.hpp"
@@ -38,6 +39,14 @@ SpaceAdaptivity::SpaceAdaptivity(const SpaceAdaptivitySettings& settings,
     split_frame_[l].assign(sim.model(l).num_points(), -1);
     contact_[l].assign(sim.model(l).num_points(), 0);
   }
+}
+
+void SpaceAdaptivity::restore(std::vector<std::vector<int>> split_frames) {
+  bool fits = split_frames.size() == split_frame_.size();
+  for (size_t l = 0; fits && l < split_frames.size(); ++l)
+    fits = split_frames[l].size() == split_frame_[l].size();
+  if (!fits) throw std::invalid_argument("SpaceAdaptivity::restore: another hierarchy's frames");
+  split_frame_ = std::move(split_frames);
 }
 
 void SpaceAdaptivity::mark_contact_region(const HierarchicalSimulation& sim) {

@@ -53,6 +53,11 @@ class SpaceAdaptivity {
               BudgetRule budget = BudgetRule::Free);
   /// c_i of the last update, per level (0 where the point is not active).
   const std::vector<double>& criterion(int level) const { return criterion_[level]; }
+  /// Frame of the last split of every point (-1: never), per level: what a checkpoint keeps
+  /// (the criterion and the contact region are recomputed at every update).
+  const std::vector<std::vector<int>>& split_frames() const { return split_frame_; }
+  /// Takes them back; throws std::invalid_argument when the sizes do not match the levels.
+  void restore(std::vector<std::vector<int>> split_frames);
   /// Evaluates the criterion only (for output when adaptivity is off).
   void evaluate(const HierarchicalSimulation& sim);
 

@@ -1,6 +1,7 @@
 #include "simulation/time_adaptivity.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "core/sorted_merge.hpp"
 
@@ -229,6 +230,28 @@ void TimeAdaptivity::end_frame(std::vector<TimeLevelChange>& changes) {
       }
       delta_max_[l][p] = -1.0f;
     }
+  rebuild_lists();
+}
+
+void TimeAdaptivity::restore(std::vector<std::vector<std::int8_t>> time_level,
+                             std::vector<std::vector<std::int8_t>> stable_level,
+                             std::vector<std::int64_t> evaluations) {
+  const auto fits = [&](const std::vector<std::vector<std::int8_t>>& levels, int lowest) {
+    if (levels.size() != time_level_.size()) return false;
+    for (size_t l = 0; l < levels.size(); ++l) {
+      if (levels[l].size() != time_level_[l].size()) return false;
+      for (std::int8_t k : levels[l])
+        if (k < lowest || k > K_) return false;
+    }
+    return true;
+  };
+  if (!fits(time_level, -1) || !fits(stable_level, 0) || evaluations.size() != evaluations_.size())
+    throw std::invalid_argument("TimeAdaptivity::restore: time levels of another hierarchy");
+  time_level_ = std::move(time_level);
+  stable_level_ = std::move(stable_level);
+  evaluations_ = std::move(evaluations);
+  pending_.clear();
+  for (auto& d : delta_max_) std::fill(d.begin(), d.end(), -1.0f);
   rebuild_lists();
 }
 

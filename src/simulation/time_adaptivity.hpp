@@ -68,6 +68,16 @@ class TimeAdaptivity {
   /// Back to evaluating every served point (outputs, probes).
   void release_fields();
 
+  /// Checkpoints (at a frame boundary: nothing pending, δ max reset): every particle's time
+  /// level and stable level per space level, and the evaluation counters.
+  const std::vector<std::vector<std::int8_t>>& time_levels() const { return time_level_; }
+  const std::vector<std::vector<std::int8_t>>& stable_levels() const { return stable_level_; }
+  /// Takes them back after refile(); throws std::invalid_argument on a size or level out of
+  /// range.
+  void restore(std::vector<std::vector<std::int8_t>> time_level,
+               std::vector<std::vector<std::int8_t>> stable_level,
+               std::vector<std::int64_t> evaluations);
+
   /// Time level of point p of space level l, -1 when it is not integrated.
   int level_of(int l, int p) const { return time_level_[l][p]; }
   /// Integrated particles per time level (all space levels), [max_level + 1].

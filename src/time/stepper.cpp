@@ -1,5 +1,8 @@
 #include "time/stepper.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "time/explicit_updates.hpp"
 
 namespace mrsim {
@@ -113,6 +116,15 @@ void Stepper::evaluate_all() {
     evaluations_[k] += blocks_[k].forces->evaluate(s.u.data(), s.v.data(), s.f.data());
   }
   if (gathered_) gathered_();
+}
+
+void Stepper::restore(std::vector<std::int64_t> evaluations, double previous_dt) {
+  if (evaluations.size() != evaluations_.size())
+    throw std::invalid_argument("Stepper::restore: " + std::to_string(evaluations.size()) +
+                                " evaluation counters for " +
+                                std::to_string(evaluations_.size()) + " blocks");
+  evaluations_ = std::move(evaluations);
+  previous_dt_ = previous_dt;
 }
 
 void Stepper::start() {

@@ -46,6 +46,13 @@ class Stepper {
   /// positions itself (method.md §5.4, time/w_cycle.hpp).
   void kick_step(double dt);
   std::int64_t force_evaluations(int block) const { return evaluations_[block]; }
+  /// What a checkpoint keeps of the stepper: the evaluation counters and Newton–Cotes' step
+  /// before (0: none). The saved forces and previous states live in the PointStates.
+  const std::vector<std::int64_t>& evaluations() const { return evaluations_; }
+  double previous_dt() const { return previous_dt_; }
+  /// Takes them back (after start(), which forgets the step before). Throws
+  /// std::invalid_argument when the counters are not one per block.
+  void restore(std::vector<std::int64_t> evaluations, double previous_dt);
   Integrator kind() const { return kind_; }
   /// semi_implicit_momentum when the blocks hold only part of the body (time levels): the
   /// momentum the filter takes from them is given back over the whole `body` (state, points,
