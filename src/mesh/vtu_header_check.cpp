@@ -1,10 +1,11 @@
 #include "mesh/vtu_header_check.hpp"
 
-#include <cctype>
+#include <algorithm>
 #include <charconv>
 #include <climits>
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "mesh/mesh_input.hpp"
@@ -18,20 +19,97 @@ struct FileInfo {
   bool big_endian = false;       // byte_order="BigEndian"
 };
 
-// Value of `name="..."` inside one XML start tag ("" if absent).
-std::string_view attribute(std::string_view tag, std::string_view name) {
-  const std::string key = cat(" ", name, "=\"");
-  const auto at = tag.find(key);
-  if (at == std::string_view::npos) return {};
-  const auto start = at + key.size();
-  const auto end = tag.find('"', start);
-  return end == std::string_view::npos ? std::string_view{} : tag.substr(start, end - start);
+// The whitespace of XML, and of VTK's scans for inline and appended data (vtkXMLParser::IsSpace).
+bool is_xml_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+// One XML start tag, with its attributes as written (entity references not decoded).
+struct StartTag {
+  std::size_t at = 0;  // position of its '<'
+  std::string_view name;
+  std::vector<std::pair<std::string_view, std::string_view>> attributes;
+
+  std::optional<std::string_view> get(std::string_view attribute) const {
+    for (const auto& [n, v] : attributes)
+      if (n == attribute) return v;
+    return std::nullopt;
+  }
+};
+
+// Every start tag of `xml` in order; comments, processing instructions, CDATA sections,
+// declarations and end tags are skipped as an XML parser skips them. VTK applies a tag's
+// attributes whatever the tag is called (the first element inside <Points> is read as the
+// points array by position, "Array" is as good as "DataArray") and however they are spaced
+// (tabs, newlines, single quotes, '>' inside a value): looking only for `<DataArray` and
+// ` name="` let misspelt or oddly spaced arrays reach VTK unchecked (mesh fuzzer, issue 18).
+// Malformed tags are read as far as they go: expat refuses the file before VTK reads any data.
+std::vector<StartTag> start_tags(std::string_view xml) {
+  std::vector<StartTag> tags;
+  const auto skip_past = [&](std::size_t from, std::string_view end) {
+    const auto found = xml.find(end, from);
+    return found == std::string_view::npos ? xml.size() : found + end.size();
+  };
+  std::size_t i = 0;
+  while ((i = xml.find('<', i)) != std::string_view::npos) {
+    const std::string_view rest = xml.substr(i);
+    if (rest.starts_with("<!--")) {
+      i = skip_past(i + 4, "-->");
+    } else if (rest.starts_with("<![CDATA[")) {
+      i = skip_past(i + 9, "]]>");
+    } else if (rest.starts_with("<?")) {
+      i = skip_past(i + 2, "?>");
+    } else if (rest.starts_with("<!") || rest.starts_with("</")) {
+      i = skip_past(i + 2, ">");
+    } else {
+      StartTag tag;
+      tag.at = i++;
+      const auto word_end = [&](std::size_t from) {
+        while (from < xml.size() && !is_xml_space(xml[from]) && xml[from] != '=' &&
+               xml[from] != '>' && xml[from] != '/')
+          ++from;
+        return from;
+      };
+      std::size_t end = word_end(i);
+      tag.name = xml.substr(i, end - i);
+      i = end;
+      while (i < xml.size()) {
+        while (i < xml.size() && is_xml_space(xml[i])) ++i;
+        if (i >= xml.size()) break;
+        if (xml[i] == '>') {
+          ++i;
+          break;
+        }
+        end = word_end(i);
+        if (end == i) {  // a '/' of "/>", or a stray '='
+          ++i;
+          continue;
+        }
+        const std::string_view attribute = xml.substr(i, end - i);
+        for (i = end; i < xml.size() && is_xml_space(xml[i]);) ++i;
+        if (i >= xml.size() || xml[i] != '=') continue;
+        for (++i; i < xml.size() && is_xml_space(xml[i]);) ++i;
+        if (i >= xml.size() || (xml[i] != '"' && xml[i] != '\'')) continue;
+        const auto close = xml.find(xml[i], i + 1);
+        const auto value_end = close == std::string_view::npos ? xml.size() : close;
+        tag.attributes.emplace_back(attribute, xml.substr(i + 1, value_end - i - 1));
+        i = std::min(xml.size(), value_end + 1);
+      }
+      tags.push_back(std::move(tag));
+    }
+  }
+  return tags;
 }
 
-// The start tag beginning at `at` ("<DataArray ... >").
-std::string_view tag_at(std::string_view xml, std::size_t at) {
-  const auto end = xml.find('>', at);
-  return xml.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at);
+// The value of an attribute mrsim interprets, "" if absent. Expat decodes entity and
+// character references ("&#48;" is "0") before VTK sees a value; no writer uses them in
+// these attributes, so rather than decode them, refuse them.
+std::string_view plain_attribute(const StartTag& tag, std::string_view attribute,
+                                 const std::filesystem::path& path) {
+  const std::string_view value = tag.get(attribute).value_or("");
+  if (value.find('&') != std::string_view::npos)
+    throw mesh_error(path, cat("the ", attribute, " attribute of ", quoted_token(tag.name),
+                               " holds an XML reference ('&'), which mrsim does not read "
+                               "(corrupt file?)"));
+  return value;
 }
 
 std::optional<std::int64_t> parse_count(std::string_view text) {
@@ -44,10 +122,12 @@ std::optional<std::int64_t> parse_count(std::string_view text) {
 }
 
 // Sum of every Piece's `name`="N".
-std::int64_t declared_total(std::string_view xml, std::string_view name, const std::filesystem::path& path) {
+std::int64_t declared_total(const std::vector<StartTag>& tags, std::string_view name,
+                            const std::filesystem::path& path) {
   std::int64_t total = 0;
-  for (auto at = xml.find("<Piece"); at != std::string_view::npos; at = xml.find("<Piece", at + 1)) {
-    const auto n = parse_count(attribute(tag_at(xml, at), name));
+  for (const StartTag& tag : tags) {
+    if (tag.name != "Piece") continue;
+    const auto n = parse_count(plain_attribute(tag, name, path));
     if (!n || *n > INT_MAX || total + *n > INT_MAX)
       throw mesh_error(path, cat("invalid ", name, " attribute in the VTK XML header"));
     total += *n;
@@ -112,12 +192,14 @@ std::uint64_t read_uint(std::string_view bytes, std::size_t index, const FileInf
 
 // VTK's compressed layout: [nblocks, block size, last block size, compressed size x nblocks],
 // then the compressed blocks.
-void check_compressed_array(const ArrayData& a, const FileInfo& f, double expansion, const std::string& name,
-                            const std::filesystem::path& path) {
+void check_compressed_array(const ArrayData& a, const FileInfo& f, double expansion,
+                            const std::string& name, const std::filesystem::path& path) {
   const std::size_t h = f.header_bytes;
-  const double available = a.base64 ? static_cast<double>(a.text.size()) * 3 / 4 : static_cast<double>(a.text.size());
+  const double available =
+      a.base64 ? static_cast<double>(a.text.size()) * 3 / 4 : static_cast<double>(a.text.size());
   auto fail = [&](const std::string& what) {
-    throw mesh_error(path, cat("compressed data array '", name, "' ", what, " (truncated or corrupt file)"));
+    throw mesh_error(
+        path, cat("compressed data array '", name, "' ", what, " (truncated or corrupt file)"));
   };
   std::string decoded;
   std::string_view header = a.text;
@@ -130,11 +212,19 @@ void check_compressed_array(const ArrayData& a, const FileInfo& f, double expans
   if (a.base64) header = decoded = base64_prefix(a.text, header_size);
   if (header.size() < header_size) fail("has an incomplete block header");
   double compressed = 0;
-  for (std::uint64_t b = 0; b < blocks; ++b) compressed += static_cast<double>(read_uint(header, 3 + b, f));
-  if (compressed > available) fail(cat("announces ", compressed, " compressed bytes, more than the file holds"));
+  for (std::uint64_t b = 0; b < blocks; ++b)
+    compressed += static_cast<double>(read_uint(header, 3 + b, f));
+  if (compressed > available)
+    fail(cat("announces ", compressed, " compressed bytes, more than the file holds"));
   const double block = static_cast<double>(read_uint(header, 1, f));
   const double last = static_cast<double>(read_uint(header, 2, f));
-  const double raw = blocks == 0 ? 0 : (static_cast<double>(blocks) - 1) * block + (last > 0 ? last : block);
+  // VTK sizes the data as blocks * block - block + last when last > 0: with no blocks that
+  // wraps around to ~2^64 bytes, and it then reads block 0 from its empty (null) table of
+  // block sizes and crashes (found by the mesh fuzzer, issue 18).
+  if (blocks == 0 && last > 0)
+    fail(cat("announces a last block of ", last, " bytes but no blocks"));
+  const double raw =
+      blocks == 0 ? 0 : (static_cast<double>(blocks) - 1) * block + (last > 0 ? last : block);
   if (raw > compressed * expansion + 1024 || last > block)
     fail(cat("announces ", raw, " uncompressed bytes from ", compressed, " compressed ones"));
 }
@@ -143,53 +233,69 @@ void check_compressed_array(const ArrayData& a, const FileInfo& f, double expans
 // does not look for the '_': it skips the blanks after the element's '>' and then one more
 // character, whatever it is. Locate the data the same way, and require that character to be
 // '_', or a stray byte would shift every offset (and VTK would read garbage block headers).
-std::size_t appended_data_marker(std::string_view file, std::size_t appended_at, const std::filesystem::path& path) {
+// The blanks are VTK's four: skipping any other byte (a '\v') would put the data elsewhere
+// than VTK does.
+std::size_t appended_data_marker(std::string_view file, std::size_t appended_at,
+                                 const std::filesystem::path& path) {
   if (appended_at == std::string_view::npos) return std::string_view::npos;
   auto p = file.find('>', appended_at);
   if (p != std::string_view::npos)
-    for (++p; p < file.size() && std::isspace(static_cast<unsigned char>(file[p])); ) ++p;
+    for (++p; p < file.size() && is_xml_space(file[p]);) ++p;
   if (p == std::string_view::npos || p >= file.size() || file[p] != '_')
     throw mesh_error(path, "the appended data does not start with '_' (truncated or corrupt file)");
   return p;
 }
 
-// VTK reads a whitespace-only NumberOfComponents as an uninitialised count (a .vtu with
-// NumberOfComponents="\n" kept it busy for a minute): accept plain positive integers only.
-void check_components(std::string_view tag, const std::string& name, const std::filesystem::path& path) {
+// VTK reads a whitespace-only NumberOfComponents as an uninitialised count, and an overflowing
+// one as INT_MAX, then loops over that many component names (a .vtu with NumberOfComponents=
+// "\n" kept it busy for a minute): accept plain positive integers only.
+void check_components(const StartTag& tag, const std::string& name,
+                      const std::filesystem::path& path) {
   constexpr std::int64_t kMaxComponents = 10000;
-  const std::string_view text = attribute(tag, "NumberOfComponents");
-  if (text.empty() && tag.find(" NumberOfComponents=") == std::string_view::npos) return;  // default 1
-  const auto n = parse_count(text);
+  if (!tag.get("NumberOfComponents")) return;  // default 1
+  const auto n = parse_count(plain_attribute(tag, "NumberOfComponents", path));
   if (!n || *n < 1 || *n > kMaxComponents)
-    throw mesh_error(path, cat("data array '", name, "' has an invalid NumberOfComponents (corrupt file)"));
+    throw mesh_error(
+        path, cat("data array '", name, "' has an invalid NumberOfComponents (corrupt file)"));
 }
 
-// Every DataArray: sane component count, appended data inside the file, and honest
-// compression headers.
-void check_data_arrays(std::string_view file, std::string_view xml, const FileInfo& f,
+// Every element's arrays as VTK reads them: sane component count, appended data inside the
+// file, and honest compression headers. VTK reads appended data whenever an element has an
+// offset, whatever its format says (format="ascii" with an offset and a corrupt block header
+// crashed it), and inline binary data only for format="binary" exactly; anything else it
+// parses as ascii text into arrays sized by the (already checked) counts.
+void check_data_arrays(std::string_view file, const std::vector<StartTag>& tags, const FileInfo& f,
                        const std::filesystem::path& path) {
   const double expansion = max_expansion(f.compressor);
   const auto appended_at = file.find("<AppendedData");
-  const std::string_view appended_tag = appended_at == std::string_view::npos ? "" : tag_at(file, appended_at);
   const auto underscore = appended_data_marker(file, appended_at, path);
-  for (auto at = xml.find("<DataArray"); at != std::string_view::npos; at = xml.find("<DataArray", at + 1)) {
-    const std::string_view tag = tag_at(xml, at);
-    const std::string_view format = attribute(tag, "format");
-    const std::string name(attribute(tag, "Name"));
+  bool appended_base64 = false;
+  if (appended_at != std::string_view::npos) {
+    const auto appended_tags = start_tags(file.substr(appended_at, underscore - appended_at));
+    // VTK decodes base64 unless the encoding is exactly "raw".
+    appended_base64 =
+        appended_tags.empty() || plain_attribute(appended_tags[0], "encoding", path) != "raw";
+  }
+  for (const StartTag& tag : tags) {
+    const std::string name(tag.get("Name").value_or(""));
     check_components(tag, name, path);
     ArrayData a;
-    if (format == "binary") {
-      auto start = at + tag.size() + 1;
-      while (start < file.size() && (file[start] == ' ' || file[start] == '\n' || file[start] == '\r' || file[start] == '\t'))
-        ++start;
-      a = {file.substr(std::min(start, file.size())), true};
-    } else if (format == "appended") {
-      const auto offset = parse_count(attribute(tag, "offset"));
-      if (underscore == std::string_view::npos || !offset || static_cast<std::uint64_t>(*offset) > file.size() - underscore - 1)
-        throw mesh_error(path, cat("data array '", name, "' points outside the appended data (truncated or corrupt file)"));
-      a = {file.substr(underscore + 1 + static_cast<std::size_t>(*offset)), attribute(appended_tag, "encoding") == "base64"};
+    if (tag.get("offset")) {
+      const auto offset = parse_count(plain_attribute(tag, "offset", path));
+      if (underscore == std::string_view::npos || !offset ||
+          static_cast<std::uint64_t>(*offset) > file.size() - underscore - 1)
+        throw mesh_error(path,
+                         cat("data array '", name,
+                             "' points outside the appended data (truncated or corrupt file)"));
+      a = {file.substr(underscore + 1 + static_cast<std::size_t>(*offset)), appended_base64};
+    } else if (plain_attribute(tag, "format", path) == "binary") {
+      // VTK's inline data starts after the first '>' from the tag start and its blanks.
+      auto start = file.find('>', tag.at);
+      start = start == std::string_view::npos ? file.size() : start + 1;
+      while (start < file.size() && is_xml_space(file[start])) ++start;
+      a = {file.substr(start), true};
     } else {
-      continue;  // ascii: VTK parses it into arrays sized by the (already checked) counts
+      continue;
     }
     if (!f.compressor.empty()) check_compressed_array(a, f, expansion, name, path);
   }
@@ -199,26 +305,30 @@ void check_data_arrays(std::string_view file, std::string_view xml, const FileIn
 
 VtuDeclared check_vtu_header(const std::string& bytes, const std::filesystem::path& path) {
   const std::string_view file = bytes;
-  const auto file_tag_at = file.find("<VTKFile");
-  if (file_tag_at == std::string_view::npos || file_tag_at > 4096)
+  // VTK's XML parser stops at the first "<AppendedData", wherever it is: so do the checks.
+  const std::vector<StartTag> tags = start_tags(file.substr(0, file.find("<AppendedData")));
+  if (tags.empty() || tags[0].name != "VTKFile")
     throw mesh_error(path, "not a VTK XML file (no <VTKFile> element)");
-  const std::string_view file_tag = tag_at(file, file_tag_at);
-  const std::string_view type = attribute(file_tag, "type");
+  const StartTag& file_tag = tags[0];
+  const std::string_view type = plain_attribute(file_tag, "type", path);
   if (type != "UnstructuredGrid")
-    throw mesh_error(path, cat("holds VTK ", type.empty() ? "(unknown)" : std::string(type),
-                               " data; mrsim reads tetrahedral meshes from UnstructuredGrid (.vtu) files"));
-  const FileInfo info{attribute(file_tag, "compressor"), attribute(file_tag, "header_type") == "UInt64" ? 8u : 4u,
-                      attribute(file_tag, "byte_order") == "BigEndian"};
+    throw mesh_error(
+        path, cat("holds VTK ", type.empty() ? "(unknown)" : std::string(type),
+                  " data; mrsim reads tetrahedral meshes from UnstructuredGrid (.vtu) files"));
+  const FileInfo info{plain_attribute(file_tag, "compressor", path),
+                      plain_attribute(file_tag, "header_type", path) == "UInt64" ? 8u : 4u,
+                      plain_attribute(file_tag, "byte_order", path) == "BigEndian"};
 
-  const std::string_view xml = file.substr(0, file.find("<AppendedData"));
-  const VtuDeclared d{declared_total(xml, "NumberOfPoints", path), declared_total(xml, "NumberOfCells", path)};
+  const VtuDeclared d{declared_total(tags, "NumberOfPoints", path),
+                      declared_total(tags, "NumberOfCells", path)};
   // At least 6 bytes per point ("0 0 0 ") and 4 per cell (an offset and a type), times what
   // compression can gain.
   const double room = static_cast<double>(bytes.size()) * max_expansion(info.compressor);
   if (6.0 * static_cast<double>(d.points) > room || 4.0 * static_cast<double>(d.cells) > room)
-    throw mesh_error(path, cat("the header declares ", d.points, " points and ", d.cells, " cells, more than ",
-                               bytes.size(), " bytes can hold: the counts are wrong or the file is truncated"));
-  check_data_arrays(file, xml, info, path);
+    throw mesh_error(
+        path, cat("the header declares ", d.points, " points and ", d.cells, " cells, more than ",
+                  bytes.size(), " bytes can hold: the counts are wrong or the file is truncated"));
+  check_data_arrays(file, tags, info, path);
   return d;
 }
 

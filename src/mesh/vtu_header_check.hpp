@@ -1,6 +1,7 @@
 #pragma once
 // Checks what a .vtu file declares (NumberOfPoints/NumberOfCells of each Piece, the components,
-// offsets and compressed block headers of each DataArray) against the size of the file, before
+// offsets and compressed block headers of every element VTK may read as an array, whatever its
+// tag name, spacing or format attribute) against the size of the file, before
 // VTK is given the file. VTK trusts these numbers: a lying block count makes it allocate and clear
 // gigabytes, and a lying point count makes it allocate the arrays, even though the data is not
 // there.
