@@ -64,6 +64,8 @@ class Hierarchy {
   /// Points whose status may have changed since the last call (duplicates possible), so the
   /// working lists are updated in O(changes) rather than O(all points).
   std::vector<std::pair<int, int>> take_touched() { return std::exchange(touched_, {}); }
+  /// Has a status possibly changed since the last take_touched()?
+  bool has_touched() const { return !touched_.empty(); }
 
  private:
   using Flags = HierarchyCounters;

@@ -21,11 +21,18 @@ TetLocator::TetLocator(const TetMesh& mesh) : mesh_(mesh) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
+  box_lo_.resize(nt);
+  box_hi_.resize(nt);
   for (size_t t = 0; t < nt; ++t) {
     const Tet& v = mesh.tets[t];
     Mat3 D;
     for (int k = 0; k < 3; ++k) D.col(k) = mesh.points[v[k + 1]] - mesh.points[v[0]];
     inverse_[t] = D.inverse();
+    box_lo_[t] = box_hi_[t] = mesh.points[v[0]];
+    for (int a = 1; a < 4; ++a) {
+      box_lo_[t] = box_lo_[t].cwiseMin(mesh.points[v[a]]);
+      box_hi_[t] = box_hi_[t].cwiseMax(mesh.points[v[a]]);
+    }
   }
   // About one tet per cell: h³ ≈ bbox volume / T, capped so the grid stays bounded.
   const Vec3 ext = (hi - lo).cwiseMax(1e-12);
@@ -87,6 +94,12 @@ double TetLocator::distance_to_tet(int t, const Vec3& p) const {
 // Best = smallest distance; among containing tets (distance 0), the largest minimum
 // barycentric coordinate; ties broken by the lowest tet index (candidates come in any order).
 void TetLocator::consider(int t, const Vec3& p, TetLocation& best, double& best_key) const {
+  // A tet whose bounding box is farther than the best so far cannot win nor tie (the margin
+  // covers rounding): skipped without its four closest-point queries. The result is the same.
+  if (best.tet >= 0) {
+    const Vec3 gap = (box_lo_[t] - p).cwiseMax(p - box_hi_[t]).cwiseMax(0.0);
+    if (gap.norm() > std::max(best_key, 0.0) * (1 + 1e-9) + 1e-300) return;
+  }
   const double d = distance_to_tet(t, p);
   const auto b = barycentric(t, p);
   const double key = d > 0 ? d : -*std::min_element(b.begin(), b.end());

@@ -33,6 +33,7 @@ class TetLocator {
 
   const TetMesh& mesh_;
   std::vector<Mat3> inverse_;  // D_t^{-1}, for barycentrics
+  std::vector<Vec3> box_lo_, box_hi_;  // bounding box of each tet: a lower bound of its distance
   Vec3 lo_;
   double h_ = 1;
   std::array<int, 3> dims_{1, 1, 1};

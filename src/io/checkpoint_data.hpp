@@ -36,6 +36,7 @@ struct SimulationCheckpoint {
   std::int32_t steps_per_frame = 1;
   double previous_dt = 0;                            // Newton–Cotes: step of u_prev, v_prev
   std::vector<std::int64_t> block_evaluations;       // per integration block
+  std::vector<std::int64_t> tet_updates;             // per level
   std::vector<std::int64_t> time_level_evaluations;  // per time level (else empty)
   std::vector<std::vector<std::int32_t>> contact_candidates;  // per tool, skin vertices
   std::vector<LevelCheckpoint> levels;

@@ -176,6 +176,7 @@ void write_simulation(hid_t file_id, const SimulationCheckpoint& s, const std::s
   g.values<double>("times", {s.time, s.clock, s.external_at, s.dt, s.previous_dt});
   g.values<std::int64_t>("counters", {s.frames, s.steps, s.steps_per_frame});
   g.values<std::int64_t>("block_evaluations", s.block_evaluations);
+  g.values<std::int64_t>("tet_updates", s.tet_updates);
   g.values<std::int64_t>("time_level_evaluations", s.time_level_evaluations);
   {
     GroupWriter contact(g.id(), "contact_candidates", file);
@@ -204,6 +205,7 @@ SimulationCheckpoint read_simulation(hid_t file_id, const std::string& file) {
   s.steps = counters[1];
   s.steps_per_frame = static_cast<std::int32_t>(counters[2]);
   s.block_evaluations = g.values<std::int64_t>("block_evaluations");
+  s.tet_updates = g.values<std::int64_t>("tet_updates");
   s.time_level_evaluations = g.values<std::int64_t>("time_level_evaluations");
   {
     GroupReader contact(file_id, "simulation/contact_candidates", file);

@@ -74,6 +74,7 @@ struct FrameRecord {
   std::vector<std::int64_t> active;             // [L]
   std::vector<std::int64_t> ghosts;             // [L]
   std::vector<std::int64_t> force_evaluations;  // [L], cumulative point-force evaluations
+  std::vector<std::int64_t> tet_updates;        // [L], cumulative per-tet stress evaluations
   std::vector<std::int64_t> time_levels;             // [C] particles per time level
   std::vector<std::int64_t> time_level_evaluations;  // [C] cumulative, per time level
   std::vector<Vec3> tool_force;  // [T] N, force on each tool at the frame's end (T may be 0)

@@ -82,6 +82,7 @@ void check_frame_record(const FrameRecord& record, std::span<const std::size_t> 
   check_size(record.active.size(), levels, where, "active");
   check_size(record.ghosts.size(), levels, where, "ghosts");
   check_size(record.force_evaluations.size(), levels, where, "force_evaluations");
+  check_size(record.tet_updates.size(), levels, where, "tet_updates");
   check_size(record.status.size(), levels, where, "status (levels)");
   for (std::size_t k = 0; k < levels; ++k) {
     check_size(record.status[k].size(), points_per_level[k],

@@ -117,6 +117,11 @@ FrameTable::FrameTable(hid_t file_id, std::size_t levels,
                         per_level_spec("force_evaluations", levels,
                                        "cumulative point-force evaluations per level"),
                         file_, mode};
+  tet_updates_ = {g, "/frames",
+                  per_level_spec("tet_updates", levels,
+                                 "cumulative per-tet stress evaluations per level (Green-Lagrange "
+                                 "and weighted tet passes; docs/output.md)"),
+                  file_, mode};
   support_reaction_ = {g, "/frames",
                        vector_spec("support_reaction", "N",
                                    "force the fixed points exert on the body, at the last force "
@@ -138,6 +143,7 @@ void FrameTable::append(const FrameRecord& record) {
   active_.append(std::span<const std::int64_t>(record.active));
   ghosts_.append(std::span<const std::int64_t>(record.ghosts));
   force_evaluations_.append(std::span<const std::int64_t>(record.force_evaluations));
+  tet_updates_.append(std::span<const std::int64_t>(record.tet_updates));
   time_levels_.append(std::span<const std::int64_t>(record.time_levels));
   time_level_evaluations_.append(std::span<const std::int64_t>(record.time_level_evaluations));
   support_reaction_.append(std::span<const double>(record.support_reaction.data(), 3));
@@ -145,10 +151,10 @@ void FrameTable::append(const FrameRecord& record) {
   append_one(frame_, static_cast<std::int32_t>(record.frame));
 }
 
-std::array<ExtendibleDataset*, 14> FrameTable::datasets() {
+std::array<ExtendibleDataset*, 15> FrameTable::datasets() {
   return {&time_,   &kinetic_energy_,   &elastic_energy_,   &wall_time_,        &wall_time_parts_,
           &stable_step_, &step_,         &active_,           &ghosts_,           &force_evaluations_,
-          &support_reaction_, &time_levels_, &time_level_evaluations_, &frame_};
+          &tet_updates_, &support_reaction_, &time_levels_, &time_level_evaluations_, &frame_};
 }
 
 void FrameTable::truncate(hsize_t rows) {

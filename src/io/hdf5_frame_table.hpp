@@ -31,12 +31,12 @@ class FrameTable {
   void close();
 
  private:
-  std::array<ExtendibleDataset*, 14> datasets();  // every one but tool_force_, frame_ last
+  std::array<ExtendibleDataset*, 15> datasets();  // every one but tool_force_, frame_ last
   std::string file_;
   Handle group_;
   ExtendibleDataset time_, kinetic_energy_, elastic_energy_, wall_time_, stable_step_, step_;
   ExtendibleDataset wall_time_parts_;
-  ExtendibleDataset active_, ghosts_, force_evaluations_, support_reaction_;
+  ExtendibleDataset active_, ghosts_, force_evaluations_, tet_updates_, support_reaction_;
   ExtendibleDataset time_levels_, time_level_evaluations_;
   std::size_t time_levels_count_ = 0;
   std::size_t tools_count_ = 0;

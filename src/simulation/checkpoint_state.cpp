@@ -45,6 +45,7 @@ SimulationCheckpoint HierarchicalSimulation::checkpoint() const {
   c.steps_per_frame = steps_per_frame_;
   c.previous_dt = stepper_->previous_dt();
   c.block_evaluations = stepper_->evaluations();
+  for (const auto& f : forces_) c.tet_updates.push_back(f->tet_updates());
   if (time_levels_) c.time_level_evaluations = time_levels_->evaluations();
   if (contact_) c.contact_candidates = contact_->candidates();
   for (int l = 0; l < num_levels(); ++l) {
@@ -78,6 +79,9 @@ void HierarchicalSimulation::restore(const SimulationCheckpoint& c) {
     throw std::invalid_argument("checkpoint of " + std::to_string(c.levels.size()) +
                                 " levels for a simulation of " + std::to_string(L));
   check_sizes(states_, c);
+  if (static_cast<int>(c.tet_updates.size()) != L)
+    throw std::invalid_argument("checkpoint with " + std::to_string(c.tet_updates.size()) +
+                                " tet-update counters for " + std::to_string(L) + " levels");
   std::vector<HierarchyCounters> counters(L);
   for (int l = 0; l < L; ++l) {
     const LevelCheckpoint& level = c.levels[l];
@@ -122,6 +126,7 @@ void HierarchicalSimulation::restore(const SimulationCheckpoint& c) {
     time_levels_->restore(std::move(time_level), std::move(stable_level), c.time_level_evaluations);
   }
   stepper_->restore(c.block_evaluations, c.previous_dt);
+  for (int l = 0; l < L; ++l) forces_[l]->set_tet_updates(c.tet_updates[l]);
   // The forces the outputs show and Störmer–Verlet kicks with are the saved ones.
   for (int l = 0; l < L; ++l) {
     states_[l].f = c.levels[l].f;

@@ -62,6 +62,9 @@ class HierarchicalSimulation {
     return stepper_->force_evaluations(time_levels_ ? 2 * l : l);
   }
 
+  /// Per-tet stress evaluations of level l's kernels so far (LevelForceField::tet_updates).
+  std::int64_t tet_updates(int l) const { return forces_[l]->tet_updates(); }
+
   /// `steps` steps of dt (not with time levels: their unit is the frame).
   void advance(int steps);
   /// One display frame: steps_per_frame steps of dt, or the W-cycle with time levels. Time-
@@ -107,6 +110,8 @@ class HierarchicalSimulation {
   void split(int level, int point);
   void merge(int level, int point);
   int collect_garbage() { return hierarchy_->collect_garbage(); }
+  /// Did a split, merge or garbage collection change a status since the last apply_changes()?
+  bool changes_pending() const { return hierarchy_->has_touched() || !woken_.empty(); }
   /// Refiles points, gives newly woken points their interpolated state, refreshes ghosts,
   /// force fields and the integrator.
   void apply_changes();

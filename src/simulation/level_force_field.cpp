@@ -99,6 +99,7 @@ std::int64_t LevelForceField::evaluate(const Vec3* u, const Vec3* v, Vec3* f) {
     weighted_internal_forces(model_, gathered, tets, share_.data(), u, v, f, ws_);
   else
     internal_forces(model_, pts, tets, u, v, f, ws_);
+  if (weighted_ || model_.law.strain == StrainMeasure::GreenLagrange) tet_updates_ += tets.count;
   const int n = pts.count;
   if (external_)
     parallel_for(n, [&](int k) {

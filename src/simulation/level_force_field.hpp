@@ -38,6 +38,10 @@ class LevelForceField final : public ForceField {
   /// hierarchy/interface_inertia.hpp (the lumped mass by default).
   void weigh(const std::vector<int>& points, const std::vector<PointInertia>& inertia);
   std::int64_t evaluate(const Vec3* u, const Vec3* v, Vec3* f) override;
+  /// Per-tet stress evaluations of every evaluate() so far (the Green–Lagrange and weighted
+  /// tet passes; Cauchy without ghosts gathers per edge and makes none): the kernel's work.
+  std::int64_t tet_updates() const { return tet_updates_; }
+  void set_tet_updates(std::int64_t n) { tet_updates_ = n; }  // a checkpoint's
   /// Evaluations count their wall time as Task::InternalForces here (nullptr: not timed).
   void set_clock(TaskClock* clock) { clock_ = clock; }
 
@@ -75,6 +79,7 @@ class LevelForceField final : public ForceField {
   std::vector<double> share_;             // per tet, 0 outside tets_
   const FieldSubset* subset_ = nullptr;
   TaskClock* clock_ = nullptr;
+  std::int64_t tet_updates_ = 0;
 };
 
 }  // namespace mrsim

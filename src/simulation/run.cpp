@@ -170,6 +170,7 @@ class FrameWriter {
       rec.ghosts.push_back(static_cast<std::int64_t>(sim_.lists().ghost_sub(l).size() +
                                                      sim_.lists().ghost_iface(l).size()));
       rec.force_evaluations.push_back(sim_.force_evaluations(l));
+      rec.tet_updates.push_back(sim_.tet_updates(l));
       rec.status.push_back(std::span<const std::int8_t>(status_[l]));
     }
     if (const TimeAdaptivity* ta = sim_.time_levels()) {
@@ -411,6 +412,7 @@ nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& si
   }
   for (int l = 0; l < sim.num_levels(); ++l) {
     j["force_evaluations"].push_back(sim.force_evaluations(l));
+    j["tet_updates"].push_back(sim.tet_updates(l));
     j["final_active"].push_back(sim.lists().active(l).size());
     j["final_ghosts"].push_back(sim.lists().ghost_sub(l).size() + sim.lists().ghost_iface(l).size());
     j["points"].push_back(sim.model(l).num_points());

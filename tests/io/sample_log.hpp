@@ -47,6 +47,7 @@ inline FrameRecord sample_record(int f, const std::vector<SampleLevel>& levels,
   r.active = {8 - f, 12 + f};
   r.ghosts = {f, 2 * f};
   r.force_evaluations = {1000LL * f, (1LL << 40) + f};
+  r.tet_updates = {5000LL * f, (1LL << 41) + 3 * f};
   r.time_levels = {3 + f, 0, 7 * f};
   r.time_level_evaluations = {11LL * f, (1LL << 41) + f, 0};
   for (std::size_t k = 0; k < tools; ++k) {

@@ -66,6 +66,7 @@ Checkpoint sample_checkpoint(bool time_levels) {
   s.steps_per_frame = 256;
   s.previous_dt = 0.02 / 512;
   s.block_evaluations = {10, 20, (1LL << 40)};
+  s.tet_updates = {7, (1LL << 42)};
   if (time_levels) s.time_level_evaluations = {1, 2, 3, 4};
   s.contact_candidates = {{1, 5, 9}, {}};
   s.levels = {sample_level(4, 0, time_levels), sample_level(9, 1, time_levels)};
@@ -110,6 +111,7 @@ void expect_equal(const Checkpoint& a, const Checkpoint& b) {
   EXPECT_EQ(s.steps_per_frame, t.steps_per_frame);
   EXPECT_EQ(s.previous_dt, t.previous_dt);
   EXPECT_EQ(s.block_evaluations, t.block_evaluations);
+  EXPECT_EQ(s.tet_updates, t.tet_updates);
   EXPECT_EQ(s.time_level_evaluations, t.time_level_evaluations);
   EXPECT_EQ(s.contact_candidates, t.contact_candidates);
   ASSERT_EQ(s.levels.size(), t.levels.size());

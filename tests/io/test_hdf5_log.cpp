@@ -44,6 +44,8 @@ void expect_frames(hid_t file, int frames) {
   const auto active = read_array<std::int64_t>(file, "/frames/active");
   const auto ghosts = read_array<std::int64_t>(file, "/frames/ghosts");
   const auto evaluations = read_array<std::int64_t>(file, "/frames/force_evaluations");
+  const auto tet_updates = read_array<std::int64_t>(file, "/frames/tet_updates");
+  ASSERT_EQ(tet_updates.dims, (std::vector<hsize_t>{n, 2}));
   ASSERT_EQ(active.dims, (std::vector<hsize_t>{n, 2}));
   ASSERT_EQ(ghosts.dims, (std::vector<hsize_t>{n, 2}));
   ASSERT_EQ(evaluations.dims, (std::vector<hsize_t>{n, 2}));
@@ -65,6 +67,7 @@ void expect_frames(hid_t file, int frames) {
       EXPECT_EQ(active.values[2 * f + k], r.active[k]);
       EXPECT_EQ(ghosts.values[2 * f + k], r.ghosts[k]);
       EXPECT_EQ(evaluations.values[2 * f + k], r.force_evaluations[k]);
+      EXPECT_EQ(tet_updates.values[2 * f + k], r.tet_updates[k]);
     }
     for (int k = 0; k < 3; ++k) {
       EXPECT_EQ(time_levels.values[3 * f + k], r.time_levels[k]);

@@ -103,6 +103,7 @@ TEST_P(CheckpointState, ARestoredSimulationGoesOnBitForBit) {
   for (int l = 0; l < 3; ++l) {
     EXPECT_EQ(original.lists().active(l), resumed.lists().active(l)) << "level " << l;
     EXPECT_EQ(original.force_evaluations(l), resumed.force_evaluations(l)) << "level " << l;
+    EXPECT_EQ(original.tet_updates(l), resumed.tet_updates(l)) << "level " << l;
     expect_bitwise_equal(original.state(l).u, resumed.state(l).u, "u", l);
     expect_bitwise_equal(original.state(l).v, resumed.state(l).v, "v", l);
     expect_bitwise_equal(original.state(l).f, resumed.state(l).f, "f", l);

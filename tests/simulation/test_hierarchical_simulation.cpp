@@ -251,6 +251,30 @@ TEST(HierarchicalSimulation, NeverSplitIsTheCoarsestMeshAlone) {
             0);
   EXPECT_EQ(sim.force_evaluations(1), 0);  // finer levels cost nothing while inactive
   EXPECT_EQ(sim.force_evaluations(2), 0);
+  EXPECT_EQ(sim.tet_updates(1), 0);
+}
+
+// The kernels' work counter (log.h5 /frames/tet_updates): one stress evaluation per tet and
+// step on a Green–Lagrange level alone, none where the Cauchy edge gather runs, and only the
+// tets around the active points of a split level.
+TEST(HierarchicalSimulation, TetUpdatesCountTheTetsTheKernelsEvaluate) {
+  const Box3 box;
+  HierarchySetup hs = setup(StrainMeasure::GreenLagrange);
+  HierarchicalSimulation green({box.ptrs()[0]}, hs);
+  green.advance(7);
+  EXPECT_EQ(green.tet_updates(0), 7 * static_cast<std::int64_t>(box.meshes[0].tets.size()));
+  HierarchicalSimulation cauchy({box.ptrs()[0]}, setup(StrainMeasure::Cauchy));
+  cauchy.advance(7);
+  EXPECT_EQ(cauchy.tet_updates(0), 0);
+  HierarchicalSimulation split(box.ptrs(), hs);
+  split.split(0, 5);
+  split.apply_changes();
+  const std::int64_t before = split.tet_updates(1);
+  split.advance(3);
+  const std::int64_t per_step = (split.tet_updates(1) - before) / 3;
+  EXPECT_GT(per_step, 0);
+  EXPECT_LT(per_step, static_cast<std::int64_t>(box.meshes[1].tets.size()));
+  EXPECT_EQ(split.tet_updates(2), 0);
 }
 
 TEST(HierarchicalSimulation, EnergyCouplingConservesEnergyAcrossAnInterface) {

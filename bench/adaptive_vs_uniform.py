@@ -1,0 +1,109 @@
+#!/usr/bin/python3
+"""What the hierarchy buys (issue 17 points 1, 2, 5): a scenario run adaptively on its levels
+against the same run on its finest level alone (same integrator, steps and tool), one thread,
+paired runs in alternation (the machine is noisy), CPU time of the whole process (user + sys).
+
+Prints both CPU times (median), their ratio, the ratios of point-force evaluations and of tet
+updates (log.h5 /frames/tet_updates), the tool force of the adaptive run against the uniform
+one at every step (max difference over the peak), and the real-time factor of each run
+(simulated seconds per wall second, VTK output off: the simulation, contact and log).
+
+    /usr/bin/python3 bench/adaptive_vs_uniform.py [--binary build/mrsim]
+        [--scenario scenarios/liver_probe.yaml] [--repeats 3] [--json out.json]
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+import h5py
+import numpy as np
+import yaml
+
+
+def timed_run(binary, scenario, out, sets):
+    """Runs mrsim once; returns (CPU s of the process, wall s)."""
+    args = [binary, "run", scenario, "-o", out, "-q", "--threads", "1",
+            "--set", "output.vtk=false"]
+    for s in sets:
+        args += ["--set", s]
+    start = time.monotonic()
+    p = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    _, status, usage = os.wait4(p.pid, 0)
+    wall = time.monotonic() - start
+    if os.waitstatus_to_exitcode(status) != 0:
+        sys.exit("mrsim failed: " + " ".join(args) + "\n" + p.stderr.read().decode())
+    return usage.ru_utime + usage.ru_stime, wall
+
+
+def counters(out):
+    with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
+        evaluations = int(h5["/frames/force_evaluations"][-1].sum())
+        tets = int(h5["/frames/tet_updates"][-1].sum())
+        duration = float(h5["/frames/time"][-1])
+        force = h5["/tool/force"][:] if "tool" in h5 else None
+    return evaluations, tets, duration, force
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    here = os.path.dirname(os.path.abspath(__file__))
+    ap.add_argument("--binary", default=os.path.join(here, "..", "build", "mrsim"))
+    ap.add_argument("--scenario", default=os.path.join(here, "..", "scenarios", "liver_probe.yaml"))
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--json", help="also write the figures to this file")
+    a = ap.parse_args()
+    with open(a.scenario) as f:
+        levels = yaml.safe_load(f)["object"]["levels"]
+    finest = json.dumps([levels[-1]])  # a YAML flow sequence mrsim's --set reads
+    runs = {"adaptive": [], "uniform": []}
+    with tempfile.TemporaryDirectory() as tmp:
+        outs = {k: os.path.join(tmp, k) for k in runs}
+        for _ in range(a.repeats):
+            runs["adaptive"].append(timed_run(a.binary, a.scenario, outs["adaptive"], []))
+            runs["uniform"].append(timed_run(a.binary, a.scenario, outs["uniform"],
+                                             ["object.levels=" + finest]))
+        figures = {k: counters(outs[k]) for k in runs}
+    cpu = {k: statistics.median(c for c, _ in v) for k, v in runs.items()}
+    wall = {k: statistics.median(w for _, w in v) for k, v in runs.items()}
+    (ea, ta, duration, fa), (eu, tu, _, fu) = figures["adaptive"], figures["uniform"]
+    result = {
+        "scenario": os.path.basename(a.scenario), "repeats": a.repeats,
+        "cpu_adaptive_s": cpu["adaptive"], "cpu_uniform_s": cpu["uniform"],
+        "cpu_ratio": cpu["adaptive"] / cpu["uniform"],
+        "evaluation_ratio": ea / eu, "tet_update_ratio": ta / tu if tu else float("nan"),
+        "realtime_adaptive": duration / wall["adaptive"],
+        "realtime_uniform": duration / wall["uniform"],
+    }
+    if fa is not None and fu is not None and len(fa) == len(fu):
+        na, nu = np.linalg.norm(fa, axis=1), np.linalg.norm(fu, axis=1)
+        result["tool_force_peak_uniform_N"] = float(nu.max())
+        result["tool_force_peak_difference"] = float(abs(na.max() - nu.max()) / nu.max())
+        result["tool_force_max_difference"] = float(np.abs(na - nu).max() / nu.max())
+        result["tool_samples"] = int(len(fa))
+    print("%s, one thread, median of %d paired runs (CPU = user + sys of the process)"
+          % (result["scenario"], a.repeats))
+    print("  CPU adaptive %.2f s, uniform finest %.2f s: ratio %.3f"
+          % (cpu["adaptive"], cpu["uniform"], result["cpu_ratio"]))
+    print("  point-force evaluations ratio %.3f, tet updates ratio %.3f (CPU / tet ratio %.2f)"
+          % (result["evaluation_ratio"], result["tet_update_ratio"],
+             result["cpu_ratio"] / result["tet_update_ratio"]))
+    if "tool_force_max_difference" in result:
+        print("  tool force: peak %.4f N uniform, peak differs by %.2f %%, worst step by %.2f %%"
+              " of the peak (%d samples)"
+              % (result["tool_force_peak_uniform_N"], 100 * result["tool_force_peak_difference"],
+                 100 * result["tool_force_max_difference"], result["tool_samples"]))
+    print("  real time (simulated s per wall s, no VTK output): adaptive %.2fx, uniform %.2fx"
+          % (result["realtime_adaptive"], result["realtime_uniform"]))
+    if a.json:
+        with open(a.json, "w") as f:
+            json.dump(result, f, indent=2)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
