@@ -181,6 +181,11 @@ void SpaceAdaptivity::update(HierarchicalSimulation& sim, int frame,
   if (budget == BudgetRule::Free) split_worst(sim, frame, events);
   if (budget == BudgetRule::Shed) shed(sim, frame, events);
   merge_calm(sim, frame, events);
+  // Only after a split or merge (issue 17: rebuild at topology changes only): the supports
+  // follow the statuses, and applying no change would rebuild the same lists, masses and
+  // stable steps and restart the integrators (Störmer–Verlet's saved half-kick force and
+  // Newton–Cotes' step before lost for nothing).
+  if (!sim.changes_pending()) return;
   const int released = sim.collect_garbage();
   if (released > 0) events.push_back({frame, "gc", -1, released});
   sim.apply_changes();
