@@ -3,11 +3,14 @@
 #include <algorithm>
 
 #include "core/parallel.hpp"
+#include "physics/green_nodal_forces.hpp"
 #include "physics/stress.hpp"
 
 namespace mrsim {
 
 namespace {
+
+constexpr int kTetBlock = 8;  // tets per task of the tet pass (green_nodal_forces' block)
 
 void cauchy_gather(const LevelModel& m, IndexSet points, const Vec3* u, const Vec3* v, Vec3* f) {
   const int n = points.count;
@@ -53,6 +56,18 @@ void tet_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets, co
   const int n = points.count;
   ws.reserve_for(m, true);
   TetGradients* tf = ws.tet_force.data();
+  // Green–Lagrange: blocks of tets through green_nodal_forces (SIMD across tets, the same bits).
+  const bool green = m.law.strain == StrainMeasure::GreenLagrange;
+  const int* ids = tets.ids ? tets.ids : ws.all_tets.data();
+  const int blocks = (nt + kTetBlock - 1) / kTetBlock;
+  const auto tet_block = [&](int k) {
+    const int first = k * kTetBlock, count = std::min(kTetBlock, nt - first);
+    if (green) {
+      green_nodal_forces(m, ids + first, count, u, v, tf);
+      return;
+    }
+    for (int q = first; q < first + count; ++q) tet_nodal_forces(m, ids[q], u, v, tf[ids[q]]);
+  };
   const auto gather = [&](int k) {
     const int i = points[k];
     Vec3 fi = Vec3::Zero();
@@ -66,14 +81,14 @@ void tet_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets, co
     f[i] = fi;
   };
   if (!use_threads(n)) {  // no serialized region (core/parallel.hpp)
-    for (int k = 0; k < nt; ++k) tet_nodal_forces(m, tets[k], u, v, tf[tets[k]]);
+    for (int k = 0; k < blocks; ++k) tet_block(k);
     for (int k = 0; k < n; ++k) gather(k);
     return;
   }
 #pragma omp parallel
   {
 #pragma omp for schedule(static)
-    for (int k = 0; k < nt; ++k) tet_nodal_forces(m, tets[k], u, v, tf[tets[k]]);
+    for (int k = 0; k < blocks; ++k) tet_block(k);
 #pragma omp for schedule(static)
     for (int k = 0; k < n; ++k) gather(k);
   }
@@ -83,8 +98,11 @@ void tet_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets, co
 
 void ForceWorkspace::reserve_for(const LevelModel& model, bool per_tet) {
   if ((per_tet || model.law.strain == StrainMeasure::GreenLagrange) &&
-      tet_force.size() != model.geo.tets.size())
+      tet_force.size() != model.geo.tets.size()) {
     tet_force.resize(model.geo.tets.size());
+    all_tets.resize(model.geo.tets.size());
+    for (size_t t = 0; t < all_tets.size(); ++t) all_tets[t] = static_cast<int>(t);
+  }
 }
 
 void internal_forces(const LevelModel& model, const Vec3* u, const Vec3* v, Vec3* f,

@@ -13,6 +13,7 @@ namespace mrsim {
 /// Scratch memory reused across steps (no allocation in the step loop).
 struct ForceWorkspace {
   std::vector<TetGradients> tet_force;  // -V P ∇N_a per tet and local vertex (Green, weighted)
+  std::vector<int> all_tets;             // 0 .. tets-1, when a pass covers every tet
   void reserve_for(const LevelModel& model, bool per_tet = false);
 };
 

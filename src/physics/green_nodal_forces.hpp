@@ -1,0 +1,17 @@
+#pragma once
+// The Green–Lagrange per-tet pass (method.md §2.3) for a list of tets, eight at a time: each
+// stage of the stress is written as plain loops over the eight tets, which the compiler turns
+// into SIMD arithmetic across tets (issue 17 point 4). Every tet's arithmetic is the one of
+// green_piola() in stress.hpp, operation for operation and in the same order, so the forces
+// are bit-identical to it (GreenNodalForces.BitIdenticalToGreenPiola), whatever the block a
+// tet falls in and whatever the thread count.
+#include "physics/level_model.hpp"
+
+namespace mrsim {
+
+/// out[tets[k]][a] = -V P ∇N_a for k in [0, count), P = F (S + 𝒱) of green_piola(); v is read
+/// only when the law is damped.
+void green_nodal_forces(const LevelModel& m, const int* tets, int count, const Vec3* u,
+                        const Vec3* v, TetGradients* out);
+
+}  // namespace mrsim
