@@ -63,7 +63,23 @@ CaseState case_state(const fs::path& folder) {
   if (!fs::exists(folder)) return CaseState::pending;
   const auto status = read_status(folder);
   if (!status) return CaseState::interrupted;
+  if (status->exit_code == 130 || status->exit_code == 143) return CaseState::interrupted;
   return status->exit_code == 0 ? CaseState::done : CaseState::failed;
+}
+
+bool can_resume(const fs::path& folder) {
+  std::error_code error;
+  return case_state(folder) == CaseState::interrupted &&
+         fs::is_regular_file(folder / "checkpoint.h5", error) &&
+         fs::is_regular_file(folder / "scenario.yaml", error) &&
+         fs::is_regular_file(folder / "log.h5", error);
+}
+
+void reopen_case_folder(const fs::path& folder) {
+  std::error_code error;
+  fs::remove(folder / "status.json", error);
+  if (error) throw RunError("cannot remove " + (folder / "status.json").string() + ": " +
+                            error.message());
 }
 
 bool needs_run(CaseState state, bool retry_failed) {

@@ -19,7 +19,8 @@ struct CaseStatus {
 
 enum class CaseState {
   pending,      // no folder: never started
-  interrupted,  // a folder without status.json: the sweep was killed while it ran
+  interrupted,  // no status.json (the sweep was killed while it ran), or the run stopped
+                // cleanly on SIGINT/SIGTERM (exit 130/143: a time limit, a preemption)
   done,         // status.json with exit code 0
   failed,       // status.json with another exit code
 };
@@ -40,6 +41,13 @@ CaseState case_state(const std::filesystem::path& folder);
 
 /// Resume rule: finished cases are skipped, failed ones too unless `retry_failed`.
 bool needs_run(CaseState state, bool retry_failed);
+
+/// An interrupted case whose run left a checkpoint (docs/output.md): it goes on with
+/// `mrsim run --resume` rather than from the start.
+bool can_resume(const std::filesystem::path& folder);
+
+/// Readies such a case to go on: only its status.json goes (it is running again).
+void reopen_case_folder(const std::filesystem::path& folder);
 
 /// Clears a folder (a left-over of an interrupted or retried run) and writes params.json.
 void prepare_case_folder(const std::filesystem::path& folder, const SweepCase& c);

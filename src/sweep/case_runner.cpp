@@ -89,13 +89,16 @@ std::pair<pid_t, int> wait_any() {
 }  // namespace
 
 std::vector<std::string> child_arguments(const RunnerOptions& options, const CaseJob& job) {
+  const std::string threads = std::to_string(std::max(1, options.threads));
+  if (job.resume)
+    return {options.executable.string(), "run", "--resume", job.folder.string(), "--quiet",
+            "--threads", threads};
   std::vector<std::string> args{options.executable.string(), "run", options.base.string()};
   for (const auto& o : job.overrides) {
     args.push_back("--set");
     args.push_back(o);
   }
-  args.insert(args.end(), {"-o", job.folder.string(), "--quiet", "--threads",
-                           std::to_string(std::max(1, options.threads))});
+  args.insert(args.end(), {"-o", job.folder.string(), "--quiet", "--threads", threads});
   return args;
 }
 

@@ -14,6 +14,7 @@ struct CaseJob {
   int index = 0;
   std::filesystem::path folder;        // DIR/case_NNNN, prepared (params.json written)
   std::vector<std::string> overrides;  // every --set of the case
+  bool resume = false;                 // go on from the folder's checkpoint (can_resume)
 };
 
 struct RunnerOptions {

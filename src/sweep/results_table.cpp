@@ -37,7 +37,8 @@ Row read_row(const fs::path& sweep_dir, const SweepCase& c) {
   row.name = case_name(c.index);
   row.ended = read_status(folder);
   if (!row.ended) return row;  // pending or interrupted: figures would be partial
-  row.status = row.ended->exit_code == 0 ? "done" : "failed";
+  const int code = row.ended->exit_code;
+  row.status = code == 0 ? "done" : code == 130 || code == 143 ? "interrupted" : "failed";
   row.summary = read_summary(folder);
   return row;
 }

@@ -89,8 +89,13 @@ std::vector<CaseJob> jobs_to_run(const Plan& plan, bool retry_failed) {
   for (const auto& c : plan.selected) {
     const fs::path folder = case_folder(plan.dir, c.index);
     if (!needs_run(case_state(folder), retry_failed)) continue;
-    prepare_case_folder(folder, c);
-    jobs.push_back({c.index, folder, case_overrides(plan.spec, c)});
+    // A run stopped by a kill, a time limit or a preemption goes on from its checkpoint.
+    const bool resume = can_resume(folder);
+    if (resume)
+      reopen_case_folder(folder);
+    else
+      prepare_case_folder(folder, c);
+    jobs.push_back({c.index, folder, case_overrides(plan.spec, c), resume});
   }
   return jobs;
 }

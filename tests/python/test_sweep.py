@@ -117,6 +117,66 @@ def test_resume(binary, tmp, sweep, out):
     check(rows[1]["status"] == "done", "and results.csv lists it done again")
 
 
+KILL_SWEEP = """base: {base}
+output: {out}
+set: ["output.checkpoint_every=4"]
+product:
+  material.damping.psi: [1.0]
+"""
+
+
+def frames_listed(folder):
+    import xml.etree.ElementTree as ET
+    try:
+        return len(list(ET.parse(os.path.join(folder, "frames.pvd")).getroot().iter("DataSet")))
+    except (OSError, ET.ParseError):
+        return 0
+
+
+def test_stopped_cases_go_on(binary, source, tmp):
+    """A sweep stopped by a time limit (SIGTERM to the whole job) or killed (SIGKILL) while a
+    case runs: the next run of the sweep resumes that case from its checkpoint.h5 (mrsim run
+    --resume: the log keeps the first start_time) and the case's outputs are identical at
+    rtol = atol = 0 to those of a sweep never stopped."""
+    import signal
+    import time
+    import h5py
+    base = os.path.relpath(os.path.join(source, "scenarios", "liver_thesis.yaml"), tmp)
+    specs = {}
+    for name in ("whole", "term", "kill"):
+        specs[name] = os.path.join(tmp, "kill_%s.yaml" % name)
+        with open(specs[name], "w") as f:
+            f.write(KILL_SWEEP.format(base=base, out="out/" + name))
+    r = run(binary, "sweep", specs["whole"], "-q", cwd=tmp)
+    check(r.returncode == 0, "the sweep left alone runs (%s)" % r.stderr[-200:])
+    for name, sig in (("term", signal.SIGTERM), ("kill", signal.SIGKILL)):
+        case = os.path.join(tmp, "out", name, "case_0000")
+        p = subprocess.Popen([binary, "sweep", specs[name], "-q"], cwd=tmp, start_new_session=True,
+                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        for _ in range(30000):
+            if p.poll() is not None or (frames_listed(case) >= 14 and
+                                        os.path.exists(os.path.join(case, "checkpoint.h5"))):
+                break
+            time.sleep(0.002)
+        if p.poll() is None:
+            os.killpg(p.pid, sig)
+        p.wait()
+        time.sleep(0.5)  # the case's run finishes its frame and writes its checkpoint (SIGTERM)
+        with h5py.File(os.path.join(case, "log.h5"), "r") as h5:
+            started = h5.attrs["start_time"]
+        stopped = frames_listed(case)
+        r = run(binary, "sweep", specs[name], "-q", cwd=tmp)
+        with h5py.File(os.path.join(case, "log.h5"), "r") as h5:
+            kept = h5.attrs["start_time"] == started
+        c = run(binary, "compare", os.path.join(tmp, "out", "whole", "case_0000"), case,
+                "--rtol", "0", "--atol", "0")
+        status = json.load(open(os.path.join(case, "status.json")))
+        check(r.returncode == 0 and status["exit_code"] == 0 and kept and c.returncode == 0,
+              "%s after %d frames: the next sweep goes on from the checkpoint (log start kept: %s),"
+              " the case is identical to the sweep left alone (%s)"
+              % (sig.name, stopped, kept, (c.stdout + c.stderr).strip().splitlines()[-1:]))
+
+
 def test_invalid(binary, tmp, base):
     path = os.path.join(tmp, "bad.yaml")
     with open(path, "w") as f:
@@ -196,6 +256,7 @@ def main():
         test_invalid(args.binary, tmp, base)
         test_case_and_collect(args.binary, tmp, sweep)
         test_plot(args.source, out)
+        test_stopped_cases_go_on(args.binary, args.source, tmp)
         test_bundled_sweeps(args.binary, args.source, tmp)
     return cli.report()
 

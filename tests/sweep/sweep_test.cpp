@@ -171,6 +171,31 @@ TEST(CaseFolder, ResumeDecisionFromStatusFiles) {
   EXPECT_DOUBLE_EQ(status->wall_time, 0.5);
 }
 
+// A run stopped cleanly by SIGINT/SIGTERM (a time limit) is interrupted, not failed; with the
+// checkpoint its run left, it goes on (mrsim run --resume) instead of starting again.
+TEST(CaseFolder, StoppedRunsWithACheckpointGoOn) {
+  const fs::path dir = fresh_dir("go_on");
+  for (int k = 0; k < 4; ++k) {
+    for (const char* f : {"checkpoint.h5", "scenario.yaml", "log.h5"})
+      write(case_folder(dir, k) / f, "x");
+  }
+  write_status(case_folder(dir, 0), {143, "interrupted", 9.0});
+  write_status(case_folder(dir, 1), {130, "interrupted", 9.0});
+  write_status(case_folder(dir, 2), {1, "diverged", 9.0});
+  // case 3: no status.json (the sweep was killed while it ran)
+  EXPECT_EQ(case_state(case_folder(dir, 0)), CaseState::interrupted);
+  EXPECT_EQ(case_state(case_folder(dir, 1)), CaseState::interrupted);
+  EXPECT_TRUE(can_resume(case_folder(dir, 0)));
+  EXPECT_TRUE(can_resume(case_folder(dir, 1)));
+  EXPECT_FALSE(can_resume(case_folder(dir, 2)));  // failed: cleared and run again if retried
+  EXPECT_TRUE(can_resume(case_folder(dir, 3)));
+  fs::remove(case_folder(dir, 3) / "checkpoint.h5");
+  EXPECT_FALSE(can_resume(case_folder(dir, 3)));  // killed before its first checkpoint
+  reopen_case_folder(case_folder(dir, 0));
+  EXPECT_FALSE(fs::exists(case_folder(dir, 0) / "status.json"));
+  EXPECT_TRUE(fs::exists(case_folder(dir, 0) / "log.h5"));
+}
+
 TEST(CaseFolder, PrepareClearsLeftOversAndWritesParams) {
   const fs::path dir = fresh_dir("prepare");
   write(case_folder(dir, 0) / "log.h5", "stale");
@@ -206,12 +231,15 @@ TEST(ResultsTable, RowsFromFakeCaseFolders) {
   fs::create_directories(case_folder(dir, 1));
   write_status(case_folder(dir, 1), {1, "diverged at frame 6, \"badly\"", 0.4});
   fs::create_directories(case_folder(dir, 2));  // interrupted: listed as pending
+  fs::create_directories(case_folder(dir, 4));
+  write_status(case_folder(dir, 4), {143, "interrupted by SIGTERM", 3.0});  // a time limit
   const std::vector<SweepCase> cases{{0, {{"a", json(5.0e+4)}}},
                                      {1, {{"a", json("cauchy")}}},
                                      {2, {{"a", json(0.1)}}},
-                                     {3, {{"a", json(3)}}}};
+                                     {3, {{"a", json(3)}}},
+                                     {4, {{"a", json(4)}}}};
   const auto lines = lines_of(results_csv(dir, {"a"}, cases));
-  ASSERT_EQ(lines.size(), 5u);
+  ASSERT_EQ(lines.size(), 6u);
   EXPECT_EQ(lines[0],
             "case,status,exit_code,message,param:a,peak_tool_force,max_displacement,"
             "final_active_L0,final_active_L1,wall_time,force_evaluations,steps,splits,merges");
@@ -219,6 +247,7 @@ TEST(ResultsTable, RowsFromFakeCaseFolders) {
   EXPECT_EQ(lines[2], "case_0001,failed,1,\"diverged at frame 6, \"\"badly\"\"\",cauchy,,,,,,,,,");
   EXPECT_EQ(lines[3], "case_0002,pending,,,0.1,,,,,,,,,");
   EXPECT_EQ(lines[4], "case_0003,pending,,,3,,,,,,,,,");
+  EXPECT_EQ(lines[5], "case_0004,interrupted,143,interrupted by SIGTERM,4,,,,,,,,,");
 }
 
 TEST(CaseRunner, FailureMessageIsTheErrorTail) {
@@ -249,4 +278,7 @@ TEST(CaseRunner, ChildArguments) {
   const auto args = child_arguments(options, {2, "out/case_0002", {"a=1"}});
   EXPECT_EQ(args, (std::vector<std::string>{"/bin/mrsim", "run", "b.yaml", "--set", "a=1", "-o",
                                             "out/case_0002", "--quiet", "--threads", "3"}));
+  const auto resumed = child_arguments(options, {2, "out/case_0002", {"a=1"}, true});
+  EXPECT_EQ(resumed, (std::vector<std::string>{"/bin/mrsim", "run", "--resume", "out/case_0002",
+                                               "--quiet", "--threads", "3"}));
 }
