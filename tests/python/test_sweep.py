@@ -133,6 +133,20 @@ def frames_listed(folder):
         return 0
 
 
+def wait_for_unlock(folder, timeout=60):
+    """Until no process holds the run folder's lock (docs/output.md "One run per folder")."""
+    import fcntl
+    import time
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        try:
+            with open(os.path.join(folder, ".mrsim.lock"), "a") as f:
+                fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
+                return
+        except BlockingIOError:
+            time.sleep(0.01)
+
+
 def test_stopped_cases_go_on(binary, source, tmp):
     """A sweep stopped by a time limit (SIGTERM to the whole job) or killed (SIGKILL) while a
     case runs: the next run of the sweep resumes that case from its checkpoint.h5 (mrsim run
@@ -161,7 +175,7 @@ def test_stopped_cases_go_on(binary, source, tmp):
         if p.poll() is None:
             os.killpg(p.pid, sig)
         p.wait()
-        time.sleep(0.5)  # the case's run finishes its frame and writes its checkpoint (SIGTERM)
+        wait_for_unlock(case)  # the case's run finishes its frame and checkpoint (SIGTERM)
         with h5py.File(os.path.join(case, "log.h5"), "r") as h5:
             started = h5.attrs["start_time"]
         stopped = frames_listed(case)
