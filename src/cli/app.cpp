@@ -53,24 +53,32 @@ int finished(const RunSummary& s) {
   return 128 + s.interrupted_by;
 }
 
-int command_run(const CommonArgs& a) {
-  set_quiet(a.quiet);
-  if (a.threads > 0) omp_set_num_threads(a.threads);
-  const Scenario sc = load(a);
+// A run with progress on stderr and clean interruption: `run` gets the options, the summary
+// line says what ran (`what`) and where its outputs are.
+template <class Run>
+int run_reporting(const CommonArgs& a, const std::string& what, const std::string& dir, Run run) {
   ProgressReporter progress(!a.quiet);
   RunOptions options;
   options.progress = [&](const RunProgress& p) { progress(p); };
   watch_interruptions();
   try {
-    const RunSummary s = run_scenario(sc, options);
+    const RunSummary s = run(options);
     progress.finish();
-    info("mrsim: " + std::to_string(s.frames) + " frames, " + std::to_string(s.steps) +
-         " steps in " + std::to_string(s.wall_time) + " s; outputs in " + sc.output.dir.string());
+    info("mrsim: " + what + std::to_string(s.frames) + " frames, " + std::to_string(s.steps) +
+         " steps in " + std::to_string(s.wall_time) + " s; outputs in " + dir);
     return finished(s);
   } catch (...) {
     progress.finish();
     throw;
   }
+}
+
+int command_run(const CommonArgs& a) {
+  set_quiet(a.quiet);
+  if (a.threads > 0) omp_set_num_threads(a.threads);
+  const Scenario sc = load(a);
+  return run_reporting(a, "", sc.output.dir.string(),
+                       [&](const RunOptions& o) { return run_scenario(sc, o); });
 }
 
 // mrsim run --resume OUTDIR: the run goes on from its checkpoint (docs/output.md).
@@ -80,20 +88,8 @@ int command_resume(const CommonArgs& a) {
   if (!a.scenario.empty() || !a.overrides.empty() || !a.output.empty())
     throw InputError("--resume goes on with the run in its folder, with the scenario it started "
                      "with: give no scenario, --set or -o with it");
-  ProgressReporter progress(!a.quiet);
-  RunOptions options;
-  options.progress = [&](const RunProgress& p) { progress(p); };
-  watch_interruptions();
-  try {
-    const RunSummary s = resume_run(a.resume, options);
-    progress.finish();
-    info("mrsim: resumed, " + std::to_string(s.frames) + " frames, " + std::to_string(s.steps) +
-         " steps in " + std::to_string(s.wall_time) + " s (whole run); outputs in " + a.resume);
-    return finished(s);
-  } catch (...) {
-    progress.finish();
-    throw;
-  }
+  return run_reporting(a, "resumed, whole run: ", a.resume,
+                       [&](const RunOptions& o) { return resume_run(a.resume, o); });
 }
 
 int command_check(const CommonArgs& a) {

@@ -106,18 +106,8 @@ void HierarchicalSimulation::restore(const SimulationCheckpoint& c) {
   steps_ = c.steps;
   steps_per_frame_ = c.steps_per_frame;
   lists_->update(*hierarchy_, hierarchy_->take_touched());
-  refile_fixed_ghosts();
-  for (auto& f : forces_) f->refresh_tets();
-  adjust_interface_weights();
-  refresh_ghosts();
-  if (!external_.empty()) {
-    resolve_loads();
-    remap_skin();
-    update_external(c.external_at);
-  }
-  update_inertia();
+  rebuild_after_topology(c.external_at);
   if (time_levels_) {
-    time_levels_->refile();
     std::vector<std::vector<std::int8_t>> time_level(L), stable_level(L);
     for (int l = 0; l < L; ++l) {
       time_level[l] = c.levels[l].time_level;

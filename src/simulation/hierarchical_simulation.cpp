@@ -449,6 +449,13 @@ void HierarchicalSimulation::apply_changes() {
     states_[l].v[q] = from_parent(l, q, true);
   }
   woken_.clear();
+  rebuild_after_topology(time_);
+  restart_integrator();
+}
+
+// Everything that follows from the statuses, once the lists are refiled and the points' values
+// are current: after a split or merge (apply_changes) and when a checkpoint is taken back.
+void HierarchicalSimulation::rebuild_after_topology(double external_time) {
   refile_fixed_ghosts();
   for (auto& f : forces_) f->refresh_tets();
   adjust_interface_weights();
@@ -456,11 +463,10 @@ void HierarchicalSimulation::apply_changes() {
   if (!external_.empty()) {
     resolve_loads();
     remap_skin();
-    update_external(time_);
+    update_external(external_time);
   }
   update_inertia();
   if (time_levels_) time_levels_->refile();
-  restart_integrator();
 }
 
 // Once per topology change, after the weights and the skin map: the masses the integrator

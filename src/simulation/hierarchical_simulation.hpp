@@ -169,6 +169,7 @@ class HierarchicalSimulation {
   void update_inertia();
   void update_stable_steps();
   void restart_integrator();
+  void rebuild_after_topology(double external_time);
   void run_w_cycle(std::vector<TimeLevelChange>& changes);
   void drift_all(int from, int to, double frame_start, double tick);
 

@@ -4,7 +4,6 @@
 = 0 to those of the same run left alone: one level, space adaptivity, time levels and a tool,
 every integrator, a surface load. A checkpoint that does not belong to the folder's run, to
 this build or to an unfinished run is refused (exit 2) and nothing in the folder changes."""
-import argparse
 import json
 import os
 import shutil
@@ -17,13 +16,10 @@ import xml.etree.ElementTree as ET
 
 import h5py
 
-FAILURES = []
-PASSED = []
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import test_cli_run as cli  # noqa: E402  (shared helpers: check, parse_args, report)
 
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    (PASSED if cond else FAILURES).append(what)
+check = cli.check
 
 
 def run(binary, *args):
@@ -190,28 +186,15 @@ def test_refusals(binary, source, tmp):
     refused(binary, torn, "damaged checkpoint", "a checkpoint cut in half")
 
 
-def parse_args():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--binary", required=True)
-    ap.add_argument("--source", required=True)
-    ap.add_argument("--shared")
-    args = ap.parse_args()
-    if not os.path.exists(args.binary):
-        print("skipped: no binary at " + args.binary)
-        return None
-    return args
-
-
 def main():
-    args = parse_args()
+    args = cli.parse_args()
     if args is None:
         return 77
     with tempfile.TemporaryDirectory() as tmp:
         test_resume_after_interruption(args.binary, args.source, tmp)
         test_resume_after_kill(args.binary, args.source, tmp)
         test_refusals(args.binary, args.source, tmp)
-    print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
-    return 1 if FAILURES else 0
+    return cli.report()
 
 
 if __name__ == "__main__":
