@@ -58,7 +58,7 @@ struct RunCheckpoint {
 };
 
 struct Checkpoint {
-  static constexpr std::int64_t kFormatVersion = 1;
+  static constexpr std::int64_t kFormatVersion = 2;  // 2: the log embedded (/log_h5)
   std::string mrsim_version, git_revision;
   std::string scenario_yaml;    // the resolved scenario the run was started with
   std::string scenario_source;  // absolute path of its file: relative mesh paths start there

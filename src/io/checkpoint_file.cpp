@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "io/embedded_file.hpp"
 #include "io/hdf5_attributes.hpp"
 #include "io/hdf5_group.hpp"
 #include "io/hdf5_read.hpp"
@@ -16,6 +17,7 @@ namespace mrsim {
 namespace {
 
 constexpr const char* kFormat = "mrsim checkpoint";
+constexpr const char* kLogDataset = "log_h5";
 
 // Writes the datasets of one group; every array is 1-D, or [n, 3] for vectors.
 class GroupWriter {
@@ -236,7 +238,8 @@ void sync_file(const std::filesystem::path& file) {
 
 }  // namespace
 
-void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
+void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c,
+                      const std::filesystem::path& log) {
   std::filesystem::path tmp = file;
   tmp += ".tmp";
   const std::string name = tmp.string();
@@ -253,6 +256,7 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
     h5::set_string_attribute(f.get(), "scenario_source", c.scenario_source, root);
     write_run(f.get(), c.run, name);
     write_simulation(f.get(), c.simulation, name);
+    h5::embed_file(f.get(), kLogDataset, log, {name, std::string("/") + kLogDataset});
     h5::check(f.close(), {name, ""}, "close file");
     sync_file(tmp);
     std::error_code ec;
@@ -265,6 +269,28 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   }
 }
 
+namespace {
+
+// The checkpoint file opened for reading once it is known to be one of this format.
+h5::Handle open_checkpoint(const std::string& name) {
+  h5::silence_automatic_error_printing();
+  h5::Handle f = h5::checked(H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
+                             {name, ""}, "open file");
+  const h5::Where root{name, "/"};
+  if (!H5Aexists(f.get(), "format") ||
+      h5::read_string_attribute(f.get(), "format", root) != kFormat)
+    throw InputError(name + ": not an mrsim checkpoint");
+  const std::int64_t version = h5::read_int64_attribute(f.get(), "format_version", root);
+  if (version != Checkpoint::kFormatVersion)
+    throw InputError(name + ": checkpoint format version " + std::to_string(version) +
+                     "; this mrsim reads version " + std::to_string(Checkpoint::kFormatVersion));
+  if (!h5::has_link(f.get(), kLogDataset, root))
+    throw RunError(name + ": no /" + std::string(kLogDataset));
+  return f;
+}
+
+}  // namespace
+
 Checkpoint read_checkpoint(const std::filesystem::path& file) {
   const std::string name = file.string();
   if (!std::filesystem::is_regular_file(file))
@@ -272,17 +298,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
                      ": no checkpoint here (a run writes one every "
                      "output.checkpoint_every frames and when it is interrupted)");
   try {
-    h5::silence_automatic_error_printing();
-    h5::Handle f = h5::checked(H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
-                               {name, ""}, "open file");
+    h5::Handle f = open_checkpoint(name);
     const h5::Where root{name, "/"};
-    if (!H5Aexists(f.get(), "format") ||
-        h5::read_string_attribute(f.get(), "format", root) != kFormat)
-      throw InputError(name + ": not an mrsim checkpoint");
-    const std::int64_t version = h5::read_int64_attribute(f.get(), "format_version", root);
-    if (version != Checkpoint::kFormatVersion)
-      throw InputError(name + ": checkpoint format version " + std::to_string(version) +
-                       "; this mrsim reads version " + std::to_string(Checkpoint::kFormatVersion));
     Checkpoint c;
     c.mrsim_version = h5::read_string_attribute(f.get(), "mrsim_version", root);
     c.git_revision = h5::read_string_attribute(f.get(), "git_revision", root);
@@ -294,6 +311,17 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   } catch (const RunError& e) {
     throw InputError(std::string("damaged checkpoint: ") + e.what());
   }
+}
+
+void restore_checkpoint_log(const std::filesystem::path& file, const std::filesystem::path& log) {
+  const std::string name = file.string();
+  h5::Handle f;
+  try {
+    f = open_checkpoint(name);
+  } catch (const RunError& e) {
+    throw InputError(std::string("damaged checkpoint: ") + e.what());
+  }
+  h5::extract_file(f.get(), kLogDataset, log, {name, std::string("/") + kLogDataset});
 }
 
 }  // namespace mrsim

@@ -130,6 +130,9 @@ class FrameWriter {
         tool_surfaces_.push_back(tool_surface(c->tool(k).shape));
       }
     if (resume) {
+      // The checkpoint's copy of the log, not the folder's: a run killed while it flushed
+      // log.h5 may have left it torn (HDF5 files are not crash-consistent).
+      restore_checkpoint_log(sc.output.dir / kCheckpointFile, sc.output.dir / "log.h5");
       const RunCheckpoint& r = resume->run;
       log_ = std::make_unique<Hdf5Log>(sc.output.dir / "log.h5", header,
                                        Hdf5LogRows{r.frame + 1, r.log_events, r.log_tool_samples});
@@ -356,7 +359,7 @@ void save_checkpoint(const Scenario& sc, const HierarchicalSimulation& sim,
   r.log_events = rows.events;
   r.log_tool_samples = rows.tool_samples;
   c.simulation = take_checkpoint(sim, adapt);
-  write_checkpoint(sc.output.dir / kCheckpointFile, c);
+  write_checkpoint(sc.output.dir / kCheckpointFile, c, sc.output.dir / "log.h5");
 }
 
 // time.adapt_substeps: the frame just run took another number of steps than the one before,

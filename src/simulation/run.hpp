@@ -32,9 +32,9 @@ struct RunSummary {
 RunSummary run_scenario(const Scenario& scenario, const RunOptions& options = {});
 
 /// Goes on with the run in `dir` from its checkpoint.h5 (mrsim run --resume; docs/output.md
-/// "Checkpoints and --resume"): the folder's scenario.yaml, the run's log.h5 and frames cut
-/// back to the checkpoint's frame, then the remaining frames, written as the uninterrupted run
-/// would have written them. Throws InputError (before anything is changed) when there is no
+/// "Checkpoints and --resume"): the folder's scenario.yaml, the checkpoint's copy of log.h5,
+/// the frames cut back to the checkpoint's frame, then the remaining frames, written as the
+/// uninterrupted run would have written them. Throws InputError (before anything is changed) when there is no
 /// checkpoint, when it belongs to another scenario or build, or when the run completed.
 RunSummary resume_run(const std::filesystem::path& dir, const RunOptions& options = {});
 

@@ -133,11 +133,26 @@ void expect_equal(const Checkpoint& a, const Checkpoint& b) {
   }
 }
 
+// A stand-in for log.h5: `size` bytes that are not all alike.
+std::filesystem::path sample_log(const std::filesystem::path& dir, std::size_t size) {
+  const auto file = dir / "log.h5";
+  std::string bytes(size, '\0');
+  for (std::size_t i = 0; i < size; ++i) bytes[i] = static_cast<char>((i * 2654435761u) >> 13);
+  std::ofstream(file, std::ios::binary) << bytes;
+  return file;
+}
+
+std::string contents(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
 TEST(CheckpointFile, EveryFieldComesBackBitForBit) {
   test::TempDir dir;
+  const auto log = sample_log(dir.path(), 1000);
   for (bool time_levels : {false, true}) {
     const Checkpoint c = sample_checkpoint(time_levels);
-    write_checkpoint(dir.path() / kCheckpointFile, c);
+    write_checkpoint(dir.path() / kCheckpointFile, c, log);
     expect_equal(c, read_checkpoint(dir.path() / kCheckpointFile));
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "checkpoint.h5.tmp"));
   }
@@ -146,13 +161,14 @@ TEST(CheckpointFile, EveryFieldComesBackBitForBit) {
 TEST(CheckpointFile, AFailedWriteLeavesThePreviousCheckpoint) {
   test::TempDir dir;
   const auto file = dir.path() / kCheckpointFile;
+  const auto log = sample_log(dir.path(), 1000);
   Checkpoint first = sample_checkpoint(false);
-  write_checkpoint(file, first);
+  write_checkpoint(file, first, log);
   // The temporary file cannot be made: a directory is in its way.
   std::filesystem::create_directory(dir.path() / "checkpoint.h5.tmp");
   Checkpoint second = sample_checkpoint(true);
   second.run.frame = 18;
-  EXPECT_THROW(write_checkpoint(file, second), RunError);
+  EXPECT_THROW(write_checkpoint(file, second, log), RunError);
   expect_equal(first, read_checkpoint(file));
 }
 
@@ -170,7 +186,7 @@ TEST(CheckpointFile, WhatIsNotAWholeCheckpointIsAnInputErrorNamingTheFile) {
   EXPECT_NE(message_of(file).find("no checkpoint here"), std::string::npos);
   { std::ofstream(file) << "name: beam\n"; }
   EXPECT_NE(message_of(file).find("damaged checkpoint: " + file.string()), std::string::npos);
-  write_checkpoint(file, sample_checkpoint(true));
+  write_checkpoint(file, sample_checkpoint(true), sample_log(dir.path(), 1000));
   const auto size = std::filesystem::file_size(file);
   std::filesystem::resize_file(file, size - 100);
   EXPECT_NE(message_of(file).find("damaged checkpoint"), std::string::npos);
@@ -178,6 +194,27 @@ TEST(CheckpointFile, WhatIsNotAWholeCheckpointIsAnInputErrorNamingTheFile) {
   hid_t h = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   H5Fclose(h);
   EXPECT_NE(message_of(file).find("not an mrsim checkpoint"), std::string::npos);
+}
+
+// A run killed while it flushed log.h5 may leave it torn; the resumed run takes the copy the
+// checkpoint holds, byte for byte (larger than one 4 MiB copy block, and empty).
+TEST(CheckpointFile, TheLogComesBackByteForByteOverATornOne) {
+  test::TempDir dir;
+  const auto file = dir.path() / kCheckpointFile;
+  for (std::size_t size : {std::size_t{(9 << 20) + 123}, std::size_t{0}}) {
+    const auto log = sample_log(dir.path(), size);
+    const std::string written = contents(log);
+    write_checkpoint(file, sample_checkpoint(false), log);
+    std::filesystem::resize_file(log, size / 3);
+    { std::ofstream(log, std::ios::app) << "torn"; }
+    restore_checkpoint_log(file, log);
+    EXPECT_EQ(contents(log), written) << size << " bytes";
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "log.h5.tmp"));
+  }
+  // Without a checkpoint's log there is nothing to go on from: a damaged checkpoint.
+  hid_t h = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  H5Fclose(h);
+  EXPECT_THROW(restore_checkpoint_log(file, dir.path() / "log.h5"), InputError);
 }
 
 }  // namespace
