@@ -185,10 +185,12 @@ def test_stopped_cases_go_on(binary, source, tmp):
         c = run(binary, "compare", os.path.join(tmp, "out", "whole", "case_0000"), case,
                 "--rtol", "0", "--atol", "0")
         status = json.load(open(os.path.join(case, "status.json")))
-        check(r.returncode == 0 and status["exit_code"] == 0 and kept and c.returncode == 0,
-              "%s after %d frames: the next sweep goes on from the checkpoint (log start kept: %s),"
-              " the case is identical to the sweep left alone (%s)"
-              % (sig.name, stopped, kept, (c.stdout + c.stderr).strip().splitlines()[-1:]))
+        ok = r.returncode == 0 and status["exit_code"] == 0 and kept and c.returncode == 0
+        why = "" if ok else " sweep exit %d, case exit %d: %s" % (
+            r.returncode, status["exit_code"], status.get("message", "")[-300:])
+        check(ok, "%s after %d frames: the next sweep goes on from the checkpoint (log start kept: "
+              "%s), the case is identical to the sweep left alone (%s)%s"
+              % (sig.name, stopped, kept, (c.stdout + c.stderr).strip().splitlines()[-1:], why))
 
 
 def test_invalid(binary, tmp, base):
