@@ -2,11 +2,14 @@
 """Docs that stay true (issue 19 point 5): every key a run writes into summary.json has a row
 in docs/output.md's table, and every row there is a key some run writes (a run with tools, time
 levels and the real-time budget writes all of them), with the meanings the table gives
-(frames after t = 0 against log.h5's rows, the energies, the wall time's parts); and numbers
-the README states about bundled scenarios that no other test checks."""
+(frames after t = 0 against log.h5's rows, the energies, the wall time's parts); numbers
+the README states about bundled scenarios that no other test checks; docs/validation.md is
+what the validation suite measures now, and the README's validation figures are its records'."""
+import glob
 import json
 import os
 import re
+import subprocess
 import sys
 import tempfile
 
@@ -77,6 +80,103 @@ def test_liver_press_numbers(binary, source, tmp):
           "the same)" % (peak, stated))
 
 
+def test_sweep_runs(binary, source, tmp):
+    """README: every case of the bundled volume_lambda sweep runs to its end; the one that
+    diverged (lambda = 0, psi = 20 Pa.s) is run here."""
+    readme_number(source, r"every case runs to its end \(λ = (0), ψ = 20 Pa·s diverged")
+    out = os.path.join(tmp, "sweep_case")
+    base = os.path.join(source, "scenarios", "volume_lambda_5e4.yaml")
+    r = cli.run(binary, "run", base, "-o", out, "-q", "--set", "time.duration=0.4",
+                "--set", "output.vtk=false", "--set", "material.lambda=0",
+                "--set", "material.damping.psi=20")
+    check(r.returncode == 0, "volume_lambda sweep case lambda = 0, psi = 20 runs to its end "
+          "(exit %d) %s" % (r.returncode, r.stderr.strip()[-200:]))
+
+
+def validation_records(binary):
+    """The records `ctest -L validation` left in the build (tests/validation/validation_record.hpp;
+    ctest runs that suite before this test: fixture validation_records)."""
+    folder = os.path.join(os.path.dirname(os.path.abspath(binary)), "validation")
+    records = {}
+    for path in glob.glob(os.path.join(folder, "*.json")):
+        with open(path, encoding="utf-8") as f:
+            record = json.load(f)
+        records[record["id"]] = record
+    return folder, records
+
+
+def without_revision(text):
+    return [line for line in text.splitlines() if not line.startswith("Generated from the records")]
+
+
+def test_validation_report_current(binary, source, tmp):
+    """docs/validation.md regenerated from this build's records differs only in its revision."""
+    folder, records = validation_records(binary)
+    check(len(records) > 0, "the validation suite left its records in %s" % folder)
+    if not records:
+        return
+    out = os.path.join(tmp, "validation.md")
+    r = subprocess.run(["/usr/bin/python3", os.path.join(source, "scripts", "validation_report.py"),
+                        "--records", folder, "--out", out, "--figures", os.path.join(tmp, "validation")],
+                       capture_output=True, text=True, timeout=300)
+    now = without_revision(open(out, encoding="utf-8").read()) if os.path.exists(out) else []
+    doc = without_revision(open(os.path.join(source, "docs", "validation.md"),
+                                encoding="utf-8").read())
+    first = next((i for i, (a, b) in enumerate(zip(doc, now)) if a != b), min(len(doc), len(now)))
+    same = now == doc
+    check(same, "docs/validation.md is what the validation suite measures now (%d checks)%s"
+          % (len(records), "" if same else ": line %d is now %r, the doc says %r; regenerate it "
+             "with scripts/validation_report.py --run build (%s)"
+             % (first + 1, now[first] if first < len(now) else None,
+                doc[first] if first < len(doc) else None, r.stderr.strip()[-200:])))
+
+
+def agrees(stated, value):
+    """`stated` (as written, e.g. "0.84") is `value` rounded to the decimals it shows."""
+    decimals = len(stated.split(".")[1]) if "." in stated else 0
+    return abs(float(stated) - value) <= 0.5 * 10 ** -decimals + 1e-12
+
+
+def test_readme_validation_numbers(binary, source):
+    """The validation figures the README quotes are those the suite measures."""
+    _, records = validation_records(binary)
+    if not records:
+        return
+    measured = lambda rid: records[rid]["measured"] if rid in records else float("nan")
+    pairs = []
+    found = readme_number(source, r"alone, its levels vibrate at\s+([\d.]+), ([\d.]+) and "
+                          r"([\d.]+) Hz")
+    if found:
+        pairs += list(zip(found, [measured("beam_level_f1_L%d" % k) for k in range(3)],
+                          ["f1 L0", "f1 L1", "f1 L2"]))
+    found = readme_number(source, r"spread \(max − min\)/mean ([\d.]+), and ([\d.]+) between")
+    if found:
+        pairs += [(found[0], measured("beam_levels_f1_spread"), "f1 spread"),
+                  (found[1], measured("beam_levels_f1_spread_L1_L2"), "f1 spread L1-L2")]
+    found = readme_number(source, r"vibrates\s+within ([\d.]+) % of its finest level alone "
+                          r"\(static deflection within ([\d.]+) %\), with at most (\d+) % of")
+    if found:
+        active = re.search(r"\((\d+) %;", records.get("beam_levels_f1_adaptive", {}).get("note", ""))
+        pairs += [(found[0], 100 * abs(measured("adaptive_vs_uniform_f1")), "adaptive f1 gap %"),
+                  (found[1], 100 * abs(measured("adaptive_vs_uniform_static")),
+                   "adaptive static gap %"),
+                  (found[2], float(active.group(1)) if active else float("nan"),
+                   "finest points active %")]
+    found = readme_number(source, r"Hertz slope ([\d.]+), force within\s+(\d+) %; "
+                          r"Boussinesq ([\d.]+)")
+    if found:
+        pairs += [(found[0], measured("indentation_hertz_slope"), "Hertz slope"),
+                  (found[1], 100 * abs(1 - measured("indentation_hertz_force")), "Hertz force %"),
+                  (found[2], measured("indentation_punch"), "Boussinesq ratio")]
+    found = readme_number(source, r"\((\d+) checks; see below\)")
+    if found:
+        pairs.append((found[0], len(records), "validation checks"))
+    wrong = ["%s: README %s, measured %.4g" % (what, said, value)
+             for said, value, what in pairs if not agrees(said, value)]
+    check(pairs and not wrong, "the README's %d validation figures are the suite's records%s"
+          % (len(pairs), ": " + "; ".join(wrong) if wrong else ""))
+
+
 def main():
     args = cli.parse_args()
     if args is None:
@@ -84,6 +184,9 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         test_summary_keys(args.binary, args.source, tmp)
         test_liver_press_numbers(args.binary, args.source, tmp)
+        test_sweep_runs(args.binary, args.source, tmp)
+        test_validation_report_current(args.binary, args.source, tmp)
+        test_readme_validation_numbers(args.binary, args.source)
     return cli.report()
 
 
