@@ -6,6 +6,7 @@ liver_probe (Fig. 5.9), little_man_shake (Fig. 5.10), volume_lambda_* (Fig. 5.8;
 changes printed here are the ones the README reports)."""
 import json
 import os
+import re
 import sys
 import tempfile
 
@@ -345,11 +346,17 @@ def test_volume_lambda(binary, source, tmp):
     forces = [changes[t][2] for t in ("0", "5e4", "5e5")]
     check(forces[0] < forces[1] < forces[2], "the stiffer in volume, the harder the probe pushes: %s N"
           % ["%.3f" % f for f in forces])
-    readme = {"0": ("−15.4", "2.18"), "5e4": ("−6.12", "2.86"), "5e5": ("−4.86", "5.15")}
-    for tag, (dv, v0, f) in changes.items():
-        ours = ("%.3g" % (dv * 1e6)).replace("-", "−"), "%.2f" % f
-        check(ours == readme[tag], "volume_lambda_%s: the README's table says %s cm^3 and %s N, "
-              "the run %s cm^3 and %s N" % ((tag,) + readme[tag] + ours))
+    # The README's table, row by row: lambda, nu, dV (cm3, % of the liver), % of the cap, force.
+    readme = open(os.path.join(source, "README.md"), encoding="utf-8").read()
+    rows = dict((m.group(1), m.groups()[1:]) for m in re.finditer(
+        r"^\| (0|5·10⁴|5·10⁵) \| [\d.]+ \| (\S+) cm³ \((\S+) %\) \| (\S+) % \| ([\d.]+) N \|$",
+        readme, re.M))
+    for label, tag in (("0", "0"), ("5·10⁴", "5e4"), ("5·10⁵", "5e5")):
+        dv, v0, f = changes[tag]
+        ours = tuple(x.replace("-", "−") for x in (
+            "%.3g" % (dv * 1e6), "%.2f" % (100 * dv / v0), "%.0f" % (100 * dv / cap), "%.2f" % f))
+        check(rows.get(label) == ours, "volume_lambda_%s: the README's table says %s (dV cm^3, "
+              "%% of the liver, %% of the cap, N), the run %s" % (tag, rows.get(label), ours))
 
 
 def test_little_man(binary, source, tmp):
