@@ -63,10 +63,13 @@ def main():
     runs = {"adaptive": [], "uniform": []}
     with tempfile.TemporaryDirectory() as tmp:
         outs = {k: os.path.join(tmp, k) for k in runs}
+        uniform = ["object.levels=" + finest]
         for _ in range(a.repeats):
             runs["adaptive"].append(timed_run(a.binary, a.scenario, outs["adaptive"], []))
-            runs["uniform"].append(timed_run(a.binary, a.scenario, outs["uniform"],
-                                             ["object.levels=" + finest]))
+            if len(uniform) == 1:  # the same steps: the adaptive run's, computed or given
+                with open(os.path.join(outs["adaptive"], "scenario.yaml")) as f:
+                    uniform.append("time.substeps=%d" % yaml.safe_load(f)["time"]["substeps"])
+            runs["uniform"].append(timed_run(a.binary, a.scenario, outs["uniform"], uniform))
         figures = {k: counters(outs[k]) for k in runs}
     cpu = {k: statistics.median(c for c, _ in v) for k, v in runs.items()}
     wall = {k: statistics.median(w for _, w in v) for k, v in runs.items()}

@@ -68,27 +68,37 @@ def test_liver_probe(binary, source, tmp):
         active = h5["/frames/active"][:]
         name = h5["/tool"].attrs["name"]
         name = name.decode() if isinstance(name, bytes) else str(name)
+    # What the README's Fig. 5.9 row states: finest points at the strongest push, peak, rate.
+    readme = open(os.path.join(source, "README.md"), encoding="utf-8").read()
+    row = re.search(r"\((\d+) of 3386 points at the strongest push, peak ([\d.]+) N\) and the "
+                    r"liver is back on level 0 at the end; `/tool/force` at ([\d.]+) kHz", readme)
+    check(row is not None, "README states liver_probe's figures")
+    stated_points, stated_peak, stated_khz = row.groups() if row else ("-1", "-1", "-1")
     rate = 1.0 / np.diff(t)
     check(len(t) == summary["steps"] and force.shape == (len(t), 3) and pos.shape == (len(t), 3),
           "/tool/* has one sample per simulation step (%d)" % len(t))
-    check(bool(np.all(rate >= 1000)) and abs(rate.min() - 12800) < 1e-6 * 12800,
-          "the force is logged at %.0f Hz of simulated time (>= 1 kHz)" % rate.min())
+    khz = 1000 * float(stated_khz)
+    check(bool(np.all(rate >= 1000)) and abs(rate.min() - khz) < 1e-6 * khz,
+          "the force is logged at %.0f Hz of simulated time (>= 1 kHz; README: %s kHz)"
+          % (rate.min(), stated_khz))
     check(name == "probe", "/tool is named after the scenario's tool (%s)" % name)
     at_frames = np.searchsorted(t, frame_time[1:] - 1e-12)
     check(frame_force.shape == (len(frame_time), 1, 3) and
           np.array_equal(frame_force[1:, 0, :], force[at_frames]),
           "/frames/tool_force is the force at each frame's last step")
     peak = np.linalg.norm(force, axis=1).max()
-    check(abs(summary["peak_tool_force"] - peak) <= 1e-12 * peak and round(peak, 2) == 1.77,
-          "summary peak_tool_force = max |/tool/force| = %.3f N (README: 1.77 N)" % peak)
+    check(abs(summary["peak_tool_force"] - peak) <= 1e-12 * peak and
+          "%.2f" % peak == stated_peak,
+          "summary peak_tool_force = max |/tool/force| = %.3f N (README: %s N)"
+          % (peak, stated_peak))
     touching = contacts > 0
     check(bool(np.all(force[~touching] == 0)) and bool(np.all(force[touching, 2] > 0)),
           "the force is zero without contact and pushes the probe up while touching")
     fine = active[:, -1]
     pressed = np.argmax(frame_force[:, 0, 2])
-    check(fine[pressed] == 557 and fine[-1] == 0 and active[-1, 0] == active[0, 0],
-          "finest level active under the probe (%d points at the strongest push, README: 557), "
-          "back to level 0 at the end" % fine[pressed])
+    check(str(fine[pressed]) == stated_points and fine[-1] == 0 and active[-1, 0] == active[0, 0],
+          "finest level active under the probe (%d points at the strongest push, README: %s), "
+          "back to level 0 at the end" % (fine[pressed], stated_points))
     vtm = os.path.join(out, "frames", "frame_%06d.vtm" % pressed)
     b = blocks(vtm)
     check("surface" in b and "tool" in b, "frame %d has the surface and tool blocks" % pressed)
@@ -137,6 +147,12 @@ def test_liver_thesis(binary, source, tmp):
           "particles on %d time levels at the strongest push (%s)" % (np.count_nonzero(levels), levels))
     peak = summary["peak_tool_force"]
     check(abs(peak - 1.267) < 0.0005, "peak force on the probe %.4f N (README: 1.267 N)" % peak)
+    # What the README's Fig. 5.9 row states: finest points at the strongest push, peak, rate.
+    readme = open(os.path.join(source, "README.md"), encoding="utf-8").read()
+    row = re.search(r"\((\d+) of 3386 points at the strongest push, peak ([\d.]+) N\) and the "
+                    r"liver is back on level 0 at the end; `/tool/force` at ([\d.]+) kHz", readme)
+    check(row is not None, "README states liver_probe's figures")
+    stated_points, stated_peak, stated_khz = row.groups() if row else ("-1", "-1", "-1")
     rate = 1.0 / np.diff(t)
     check(rate.min() >= 1000, "force logged at %.0f-%.0f Hz (>= 1 kHz)" % (rate.min(), rate.max()))
 
@@ -189,8 +205,10 @@ def test_criterion_refines_under_tool(binary, source, tmp):
     runs = {}
     for refine in ("true", "false"):
         out = os.path.join(tmp, "probe_contact_refine_" + refine)
+        # Criterion alone, a patch follows the liver's lightly damped vibration until 1.9 s.
         r = cli.run(binary, "run", probe, "-o", out, "-q", "--set", "output.vtk=false",
-                    "--set", "adaptivity.space.contact_refine=" + refine)
+                    "--set", "adaptivity.space.contact_refine=" + refine,
+                    "--set", "time.duration=" + ("1.4" if refine == "true" else "2.0"))
         check(r.returncode == 0, "liver_probe with contact_refine=%s runs (exit %d) %s"
               % (refine, r.returncode, r.stderr[-300:]))
         runs[refine] = first_split_and_contact(os.path.join(out, "log.h5"))
