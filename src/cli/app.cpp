@@ -7,7 +7,9 @@
 #include <new>
 
 #include "cli/compare_command.hpp"
+#include "cli/guarded_run.hpp"
 #include "cli/mesh_command.hpp"
+#include "cli/mesher_handoff.hpp"
 #include "cli/progress_reporter.hpp"
 #include "cli/sweep_command.hpp"
 #include "core/error.hpp"
@@ -102,6 +104,7 @@ int command_check(const CommonArgs& a) {
 }  // namespace
 
 int run_cli(int argc, char** argv) {
+  if (argc >= 2 && std::string_view(argv[1]) == "mesh") return hand_over_to_mesher(argc, argv, 2);
   CLI::App app{"mrsim: hierarchical multiresolution soft-body simulator (Debunne's model)"};
   app.set_version_flag("--version", std::string("mrsim ") + kVersion + " (" + kGitRevision + ")");
   app.require_subcommand(1);
@@ -123,7 +126,8 @@ int run_cli(int argc, char** argv) {
   CLI::App* check = app.add_subcommand(
       "check", "Validate a scenario and its meshes; print the resolved scenario");
   add_scenario_args(check, check_args);
-  const MeshCommand mesh = add_mesh_command(app);
+  // Listed for --help; `mrsim mesh ...` never reaches the parser (hand_over_to_mesher above).
+  app.add_subcommand("mesh", std::string(kMeshDescription) + " (mrsim mesh --help)");
   const CompareCommand compare = add_compare_command(app);
   const SweepCommand sweep = add_sweep_command(app);
   try {
@@ -132,25 +136,12 @@ int run_cli(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitBadInput;
   }
-  try {
+  return guarded_run([&] {
     if (*run) return run_args.resume.empty() ? command_run(run_args) : command_resume(run_args);
-    if (*mesh.command) return mesh.run();
     if (*compare.command) return compare.run();
     if (*sweep.command) return sweep.run();
     return command_check(check_args);
-  } catch (const InputError& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return kExitBadInput;
-  } catch (const RunError& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return kExitRunFailure;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "error: out of memory\n";
-    return kExitRunFailure;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return kExitRunFailure;
-  }
+  });
 }
 
 }  // namespace mrsim

@@ -1,10 +1,12 @@
 #include "cli/mesh_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
+#include "cli/guarded_run.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "meshing/level_outputs.hpp"
@@ -87,28 +89,38 @@ int run_mesh(const MeshArgs& a) {
   return kExitOk;
 }
 
-}  // namespace
-
-MeshCommand add_mesh_command(CLI::App& app) {
-  auto args = std::make_shared<MeshArgs>();
-  CLI::App* cmd = app.add_subcommand("mesh", "Build a hierarchy of tetrahedral meshes of one object, coarse to fine");
-  cmd->add_option("input", args->input, "Closed triangulated surface: .stl, .obj, .off or .ply");
+void add_mesh_options(CLI::App* cmd, MeshArgs& args) {
+  cmd->add_option("input", args.input, "Closed triangulated surface: .stl, .obj, .off or .ply");
   std::string shapes;
   for (const auto& name : shape_names()) shapes += (shapes.empty() ? "" : "|") + name;
-  cmd->add_option("--shape", args->shape, "Built-in solid instead of a file: " + shapes);
-  cmd->add_option("--dims", args->dims, "Dimensions of --shape, comma-separated, in --units (see docs/meshing.md)")
+  cmd->add_option("--shape", args.shape, "Built-in solid instead of a file: " + shapes);
+  cmd->add_option("--dims", args.dims, "Dimensions of --shape, comma-separated, in --units (see docs/meshing.md)")
       ->delimiter(',');
-  cmd->add_option("--tets", args->tets, "Tet count of each level, comma-separated, e.g. 30,170,1900")
+  cmd->add_option("--tets", args.tets, "Tet count of each level, comma-separated, e.g. 30,170,1900")
       ->delimiter(',')->required();
-  cmd->add_option("-o,--output", args->prefix, "Output prefix: writes PREFIX_L0.vtu..., PREFIX_quality.json, "
+  cmd->add_option("-o,--output", args.prefix, "Output prefix: writes PREFIX_L0.vtu..., PREFIX_quality.json, "
                   "PREFIX_levels.yaml")->required();
-  cmd->add_option("--units", args->units, "Units of the input file and of --dims (outputs are in metres)")
+  cmd->add_option("--units", args.units, "Units of the input file and of --dims (outputs are in metres)")
       ->check(CLI::IsMember({"m", "mm"}));
-  cmd->add_option("--feature-angle", args->feature_angle,
+  cmd->add_option("--feature-angle", args.feature_angle,
                   "Surface edges sharper than this (degrees) are kept as creases; 180: smooth surface")
       ->check(CLI::Range(1.0, 180.0));
-  cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
-  return {cmd, [args] { return run_mesh(*args); }};
+  cmd->add_flag("-q,--quiet", args.quiet, "No progress on stderr");
+}
+
+}  // namespace
+
+int run_mesh_cli(int argc, char** argv) {
+  CLI::App app{kMeshDescription, "mrsim mesh"};
+  MeshArgs args;
+  add_mesh_options(&app, args);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+  return guarded_run([&args] { return run_mesh(args); });
 }
 
 }  // namespace mrsim
