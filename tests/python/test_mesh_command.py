@@ -93,6 +93,25 @@ def test_reoriented_facets_are_said(binary, source, tmp):
     check(r.returncode == 0 and said in r.stderr, f"reoriented facets are said: {r.stderr.strip()[:300]}")
 
 
+def test_gmsh_only_in_the_mesher(binary, tmp):
+    """mrsim does not load gmsh (its ~80 libraries cost 0.1 s at every start); `mrsim mesh`
+    hands over to mrsim-mesh beside it, and says how to build it when it is missing."""
+    needed = subprocess.run(["readelf", "-d", binary], capture_output=True, text=True).stdout
+    mesher = os.path.join(os.path.dirname(binary), "mrsim-mesh")
+    check("NEEDED" in needed and "gmsh" not in needed, "mrsim does not link gmsh")
+    check("gmsh" in subprocess.run(["readelf", "-d", mesher], capture_output=True,
+                                   text=True).stdout, "mrsim-mesh does")
+    alone = os.path.join(tmp, "alone")
+    os.makedirs(alone)
+    import shutil
+    shutil.copy(binary, alone)
+    r = run(os.path.join(alone, os.path.basename(binary)), "mesh", "--shape", "box", "--tets",
+            "30", "-o", os.path.join(tmp, "a"))
+    check(r.returncode == 1 and "mrsim-mesh" in r.stderr and "--target mrsim-mesh" in r.stderr,
+          "without mrsim-mesh beside it, mrsim mesh exits 1 saying how to build it: "
+          + r.stderr.strip()[:120])
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--binary", required=True)
@@ -101,6 +120,7 @@ def main():
     a = p.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         test_usage(a.binary, tmp)
+        test_gmsh_only_in_the_mesher(a.binary, tmp)
         test_bad_surfaces(a.binary, a.shared, tmp)
         test_shape(a.binary, tmp)
         test_reoriented_facets_are_said(a.binary, a.source, tmp)
