@@ -98,6 +98,7 @@ struct SpaceAdaptivitySpec {
   std::int64_t max_active_points = 0;  // 0: no cap
   int min_dwell_frames = 5;
   bool contact_refine = true;  // refine ahead of the tools (look-ahead), not only on c
+  bool predict = false;        // c also on u + ½ T² (g + f_ext/m), T = frame_dt (no lag)
   Coupling coupling = Coupling::Energy;
 };
 

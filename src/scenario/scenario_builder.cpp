@@ -85,6 +85,7 @@ SpaceAdaptivitySpec space_spec(const json& a) {
   spec.max_active_points = a["max_active_points"].get<std::int64_t>();
   spec.min_dwell_frames = a["min_dwell_frames"].get<int>();
   spec.contact_refine = a["contact_refine"].get<bool>();
+  spec.predict = a["predict"].get<bool>();
   spec.coupling = a["coupling"] == "force"               ? Coupling::Force
                   : a["coupling"] == "energy_consistent" ? Coupling::EnergyConsistent
                                                          : Coupling::Energy;

@@ -363,16 +363,27 @@ void HierarchicalSimulation::update_external(double t) {
   }
 }
 
+void HierarchicalSimulation::for_each_surface_load(
+    const std::function<void(int, int, const Vec3&)>& visit) const {
+  for (const LoadTarget& target : load_targets_)
+    if (target.level >= 0)
+      visit(target.level, target.point, load_factors_[target.load] * target.force);
+}
+
 // A Dirichlet point stays at rest on every level, ghost or not: its row of the interpolation
 // map is zero, so it never carries a stale interpolated value into a split (a prestress) and
 // its force goes to the support, not to its sources.
 void HierarchicalSimulation::refresh_ghosts() {
   const TaskTimer timer(&tasks_, Task::Ghosts);
-  update_ghosts(*hierarchy_, *lists_, fields_);
+  interpolate_ghosts(fields_);
+}
+
+void HierarchicalSimulation::interpolate_ghosts(std::vector<LevelFields>& fields) const {
+  update_ghosts(*hierarchy_, *lists_, fields);
   for (int l = 0; l < num_levels(); ++l)
     for (int p : fixed_ghosts_[l]) {
-      states_[l].u[p].setZero();
-      states_[l].v[p].setZero();
+      fields[l].u[p].setZero();
+      fields[l].v[p].setZero();
     }
 }
 

@@ -4,6 +4,7 @@
 // (§4.8), and splits/merges change the active sets between steps. Level 0 alone, never split,
 // is exactly the single-level model.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -120,6 +121,9 @@ class HierarchicalSimulation {
   void fill_inactive();
   /// Ghost refresh (method.md §4.8); also what the stepper calls after position updates.
   void refresh_ghosts();
+  /// The ghosts' entries of `fields` (one per level) interpolated from their sources' entries,
+  /// exactly as refresh_ghosts() sets u and v (Dirichlet ghosts at zero).
+  void interpolate_ghosts(std::vector<LevelFields>& fields) const;
   /// state(l).f of every active point at the current state, exactly as a step computes it
   /// (ghost forces transferred under energy coupling). Not counted as work. For probes/tests.
   void compute_forces();
@@ -137,6 +141,9 @@ class HierarchicalSimulation {
   std::span<const Vec3> external_force(int l) const {
     return external_.empty() ? std::span<const Vec3>() : std::span<const Vec3>(external_[l]);
   }
+  /// Calls visit(level, point, force) for every point a surface load acts on, with the load
+  /// at the last update (N): external_force without the contacts.
+  void for_each_surface_load(const std::function<void(int, int, const Vec3&)>& visit) const;
   /// The tools and the skin, nullptr without tools. Samples accumulate over the frames until
   /// the caller clears them.
   const SkinContact* contact() const { return contact_.get(); }

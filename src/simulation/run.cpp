@@ -493,7 +493,19 @@ RunSummary execute(const Scenario& input, const RunOptions& options, const Check
     st.energies = hierarchy_energies(sim);
     FrameTiming timing(sim.task_clock());  // frame 0: its output only
     if (!resume) {
-      adapt.evaluate(sim);
+      if (sc.space.predict) {
+        // A first split decision at t = 0 on the displacement the loads are about to cause.
+        sim.compute_forces();
+        timing.phase(Task::Adaptivity, [&] { adapt.update(sim, 0, events, BudgetRule::Free); });
+        for (const HierarchyEvent& e : events) {
+          st.splits += e.kind == "split";
+          writer.event(e);
+        }
+        events.clear();
+        st.energies = hierarchy_energies(sim);
+      } else {
+        adapt.evaluate(sim);
+      }
       writer.write(0, 0.0, 0.0, st.energies, timing);
     }
     for (int frame = st.frames_done + 1; frame <= frames; ++frame) {

@@ -39,6 +39,14 @@ SpaceAdaptivity::SpaceAdaptivity(const SpaceAdaptivitySettings& settings,
     split_frame_[l].assign(sim.model(l).num_points(), -1);
     contact_[l].assign(sim.model(l).num_points(), 0);
   }
+  if (s_.predict_horizon > 0) {
+    predicted_.resize(sim.num_levels());
+    scratch_.resize(sim.num_levels());
+    for (int l = 0; l < sim.num_levels(); ++l) {
+      predicted_[l].assign(sim.model(l).num_points(), Vec3::Zero());
+      scratch_[l].assign(sim.model(l).num_points(), Vec3::Zero());
+    }
+  }
 }
 
 void SpaceAdaptivity::restore(std::vector<std::vector<int>> split_frames) {
@@ -78,6 +86,36 @@ void SpaceAdaptivity::evaluate(const HierarchicalSimulation& sim) {
     const LevelModel& m = sim.model(l);
     for (int p : sim.lists().active(l))
       criterion_[l][p] = m.mean_edge[p] * corrected_laplacian(m, p, sim.state(l).u.data()).norm();
+  }
+  if (s_.predict_horizon > 0) add_predicted(sim);
+}
+
+// c of the displacement predicted predict_horizon ahead from the applied loads alone,
+// u + ½ T² (g + f_load/m) on the free active points, interpolated to the ghosts as a step
+// interpolates u: where the loads are about to bend the body, c rises before the frame that
+// bends it. Neither the velocity nor the internal forces enter: over a frame they would
+// multiply every fast vibration by up to (ωT)²/2 (hundreds on the liver) and refine wherever it
+// trembles; nor do the contacts, whose penalty force the body balances at once (the tools
+// have their own look-ahead). docs/hierarchy.md "Refining ahead of loads".
+void SpaceAdaptivity::add_predicted(const HierarchicalSimulation& sim) {
+  const double T = s_.predict_horizon;
+  std::vector<LevelFields> fields(sim.num_levels());
+  for (int l = 0; l < sim.num_levels(); ++l) {
+    const PointState& st = sim.state(l);
+    for (int p : sim.lists().active(l))
+      predicted_[l][p] = st.free_point[p] ? st.u[p] + (0.5 * T * T) * s_.gravity : st.u[p];
+    fields[l] = {predicted_[l].data(), scratch_[l].data()};
+  }
+  sim.for_each_surface_load([&](int l, int p, const Vec3& f) {
+    const PointState& st = sim.state(l);
+    if (st.free_point[p]) predicted_[l][p] += (0.5 * T * T * st.inv_mass[p]) * f;
+  });
+  sim.interpolate_ghosts(fields);
+  for (int l = 0; l < sim.num_levels(); ++l) {
+    const LevelModel& m = sim.model(l);
+    for (int p : sim.lists().active(l))
+      criterion_[l][p] = std::max(
+          criterion_[l][p], m.mean_edge[p] * corrected_laplacian(m, p, predicted_[l].data()).norm());
   }
 }
 
