@@ -495,7 +495,6 @@ RunSummary execute(const Scenario& input, const RunOptions& options, const Check
     if (!resume) {
       if (sc.space.predict) {
         // A first split decision at t = 0 on the displacement the loads are about to cause.
-        sim.compute_forces();
         timing.phase(Task::Adaptivity, [&] { adapt.update(sim, 0, events, BudgetRule::Free); });
         for (const HierarchyEvent& e : events) {
           st.splits += e.kind == "split";

@@ -65,7 +65,6 @@ Curves run_both(const Scenario& sc) {
   const int chunk = sc.time.substeps / kChunks;
   std::vector<HierarchyEvent> events;
   if (sc.space.predict) {  // run.cpp: a first split decision at t = 0 on the predicted field
-    sim.compute_forces();
     adapt.update(sim, 0, events);
   } else {
     adapt.evaluate(sim);
