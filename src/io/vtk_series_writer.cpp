@@ -68,7 +68,10 @@ void write_vtm(const std::filesystem::path& file, vtkMultiBlockDataSet* blocks) 
   auto writer = vtkSmartPointer<vtkXMLMultiBlockDataWriter>::New();
   writer->SetFileName(file.c_str());
   writer->SetInputData(blocks);
+  // zlib at its fastest level: on liver_probe (four levels every frame) the frames' output took
+  // 3.13 s at VTK's default level 5 and 2.50 s at level 1, for 45 MB instead of 44 MB.
   writer->SetCompressorTypeToZLib();
+  writer->SetCompressionLevel(1);
   // Raw appended binary: the smallest and fastest XML form ParaView and vtk read.
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
