@@ -24,6 +24,7 @@ def test_liver_with_time_levels(binary, source, tmp):
     out = os.path.join(tmp, "liver_time")
     scenario = os.path.join(source, "scenarios", "liver_press.yaml")
     r = cli.run(binary, "run", scenario, "-o", out, "-q", "--set", "time.duration=0.6",
+                "--set", "time.substeps=256",  # the finest time level: 9 columns
                 "--set", TIME[0], "--set", "adaptivity.time.velocity_change=1.0e-5")
     check(r.returncode == 0, "liver_press with time levels runs (exit %d) %s"
           % (r.returncode, r.stderr[-300:]))
