@@ -1,5 +1,8 @@
 #include "io/atomic_file.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -30,26 +33,43 @@ void write_whole_file(const std::filesystem::path& file, std::string_view conten
   if (!closed) fail(file, "close", errno);
 }
 
+// The data reach the disk before the rename makes them the file.
+void sync_file(const std::filesystem::path& file) {
+  const int fd = ::open(file.c_str(), O_RDONLY);
+  if (fd < 0 || ::fsync(fd) != 0) {
+    const int err = errno;
+    if (fd >= 0) ::close(fd);
+    fail(file, "sync", err);
+  }
+  ::close(fd);
+}
+
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& file, std::string_view contents) {
+void replace_atomically(const std::filesystem::path& file,
+                        const std::function<void(const std::filesystem::path& tmp)>& write,
+                        Durability durability) {
   // The temporary lives beside the target so that the rename never crosses file systems.
   std::filesystem::path temporary = file;
   temporary += ".tmp";
   try {
-    write_whole_file(temporary, contents);
+    write(temporary);
+    if (durability == Durability::Synced) sync_file(temporary);
+    std::error_code ec;
+    std::filesystem::rename(temporary, file, ec);
+    if (ec)
+      throw RunError("cannot write " + file.string() + ": rename from " + temporary.string() +
+                     " failed: " + ec.message());
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove(temporary, ignored);
     throw;
   }
-  std::error_code ec;
-  std::filesystem::rename(temporary, file, ec);
-  if (ec) {
-    std::filesystem::remove(temporary, ec);
-    throw RunError("cannot write " + file.string() + ": rename from " + temporary.string() +
-                   " failed: " + ec.message());
-  }
+}
+
+void write_file_atomically(const std::filesystem::path& file, std::string_view contents) {
+  replace_atomically(file,
+                     [&](const std::filesystem::path& tmp) { write_whole_file(tmp, contents); });
 }
 
 }  // namespace mrsim

@@ -1,11 +1,9 @@
 #include "io/checkpoint_file.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <system_error>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/embedded_file.hpp"
 #include "io/hdf5_attributes.hpp"
 #include "io/hdf5_group.hpp"
@@ -225,48 +223,31 @@ SimulationCheckpoint read_simulation(hid_t file_id, const std::string& file) {
   return s;
 }
 
-// The data reach the disk before the rename makes them the checkpoint.
-void sync_file(const std::filesystem::path& file) {
-  const int fd = ::open(file.c_str(), O_RDONLY);
-  if (fd < 0 || ::fsync(fd) != 0) {
-    const std::error_code e(errno, std::generic_category());
-    if (fd >= 0) ::close(fd);
-    throw RunError("cannot sync " + file.string() + ": " + e.message());
-  }
-  ::close(fd);
-}
-
 }  // namespace
 
 void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c,
                       const std::filesystem::path& log) {
-  std::filesystem::path tmp = file;
-  tmp += ".tmp";
-  const std::string name = tmp.string();
-  try {
-    h5::silence_automatic_error_printing();
-    h5::Handle f = h5::checked(H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
-                               H5Fclose, {name, ""}, "create file");
-    const h5::Where root{name, "/"};
-    h5::set_string_attribute(f.get(), "format", kFormat, root);
-    h5::set_int64_attribute(f.get(), "format_version", Checkpoint::kFormatVersion, root);
-    h5::set_string_attribute(f.get(), "mrsim_version", c.mrsim_version, root);
-    h5::set_string_attribute(f.get(), "git_revision", c.git_revision, root);
-    h5::set_string_attribute(f.get(), "scenario", c.scenario_yaml, root);
-    h5::set_string_attribute(f.get(), "scenario_source", c.scenario_source, root);
-    write_run(f.get(), c.run, name);
-    write_simulation(f.get(), c.simulation, name);
-    h5::embed_file(f.get(), kLogDataset, log, {name, std::string("/") + kLogDataset});
-    h5::check(f.close(), {name, ""}, "close file");
-    sync_file(tmp);
-    std::error_code ec;
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) throw RunError("cannot replace " + file.string() + ": " + ec.message());
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw;
-  }
+  replace_atomically(
+      file,
+      [&](const std::filesystem::path& tmp) {
+        const std::string name = tmp.string();
+        h5::silence_automatic_error_printing();
+        h5::Handle f = h5::checked(
+            H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+            {name, ""}, "create file");
+        const h5::Where root{name, "/"};
+        h5::set_string_attribute(f.get(), "format", kFormat, root);
+        h5::set_int64_attribute(f.get(), "format_version", Checkpoint::kFormatVersion, root);
+        h5::set_string_attribute(f.get(), "mrsim_version", c.mrsim_version, root);
+        h5::set_string_attribute(f.get(), "git_revision", c.git_revision, root);
+        h5::set_string_attribute(f.get(), "scenario", c.scenario_yaml, root);
+        h5::set_string_attribute(f.get(), "scenario_source", c.scenario_source, root);
+        write_run(f.get(), c.run, name);
+        write_simulation(f.get(), c.simulation, name);
+        h5::embed_file(f.get(), kLogDataset, log, {name, std::string("/") + kLogDataset});
+        h5::check(f.close(), {name, ""}, "close file");
+      },
+      Durability::Synced);
 }
 
 namespace {

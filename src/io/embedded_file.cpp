@@ -1,8 +1,5 @@
 #include "io/embedded_file.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -10,6 +7,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/hdf5_group.hpp"
 
 namespace mrsim::h5 {
@@ -34,11 +32,13 @@ class CFile {
   CFile(const CFile&) = delete;
   CFile& operator=(const CFile&) = delete;
   std::FILE* get() const { return f_; }
-  // Flushed, synced and closed: the bytes are on the disk before a rename publishes them.
-  void sync_and_close() {
-    if (std::fflush(f_) != 0 || ::fsync(::fileno(f_)) != 0) fail(file_, "write", errno);
+  // Flushed and closed, with the reason when either fails (a full disk shows here).
+  void close() {
+    const bool flushed = std::fflush(f_) == 0;
+    const int err = errno;
     const int closed = std::fclose(f_);
     f_ = nullptr;
+    if (!flushed) fail(file_, "write", err);
     if (closed != 0) fail(file_, "write", errno);
   }
 
@@ -97,28 +97,22 @@ void extract_file(hid_t parent, const std::string& name, const std::filesystem::
   if (H5Sget_simple_extent_ndims(space.get()) != 1 ||
       H5Sget_simple_extent_dims(space.get(), &size, nullptr) != 1)
     throw_error(where, "read " + name + " (not 1-D)");
-  std::filesystem::path tmp = file;
-  tmp += ".tmp";
-  try {
-    CFile out(tmp, "wb");
-    std::vector<unsigned char> block(static_cast<std::size_t>(std::min(size, kBlock)));
-    for (hsize_t offset = 0; offset < size; offset += kBlock) {
-      const hsize_t count = std::min(kBlock, size - offset);
-      const Slab s = slab(dataset.get(), offset, count, where);
-      check(H5Dread(dataset.get(), H5T_NATIVE_UCHAR, s.memory_space.get(), s.file_space.get(),
-                    H5P_DEFAULT, block.data()),
-            where, "read dataset");
-      if (std::fwrite(block.data(), 1, count, out.get()) != count) fail(tmp, "write", errno);
-    }
-    out.sync_and_close();
-    std::error_code ec;
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) throw RunError("cannot replace " + file.string() + ": " + ec.message());
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw;
-  }
+  replace_atomically(
+      file,
+      [&](const std::filesystem::path& tmp) {
+        CFile out(tmp, "wb");
+        std::vector<unsigned char> block(static_cast<std::size_t>(std::min(size, kBlock)));
+        for (hsize_t offset = 0; offset < size; offset += kBlock) {
+          const hsize_t count = std::min(kBlock, size - offset);
+          const Slab s = slab(dataset.get(), offset, count, where);
+          check(H5Dread(dataset.get(), H5T_NATIVE_UCHAR, s.memory_space.get(),
+                        s.file_space.get(), H5P_DEFAULT, block.data()),
+                where, "read dataset");
+          if (std::fwrite(block.data(), 1, count, out.get()) != count) fail(tmp, "write", errno);
+        }
+        out.close();
+      },
+      Durability::Synced);
 }
 
 }  // namespace mrsim::h5

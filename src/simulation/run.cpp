@@ -362,6 +362,15 @@ void save_checkpoint(const Scenario& sc, const HierarchicalSimulation& sim,
   write_checkpoint(sc.output.dir / kCheckpointFile, c, sc.output.dir / "log.h5");
 }
 
+// The splits and merges of a frame boundary: logged and counted for summary.json.
+void record_events(const std::vector<HierarchyEvent>& events, FrameWriter& writer, RunState& st) {
+  for (const HierarchyEvent& e : events) {
+    st.splits += e.kind == "split";
+    st.merges += e.kind == "merge";
+    writer.event(e);
+  }
+}
+
 // time.adapt_substeps: the frame just run took another number of steps than the one before,
 // because the stable step in force changed (docs/integrators.md). An event per change; a line
 // on stderr for the first few.
@@ -496,10 +505,7 @@ RunSummary execute(const Scenario& input, const RunOptions& options, const Check
       if (sc.space.predict) {
         // A first split decision at t = 0 on the displacement the loads are about to cause.
         timing.phase(Task::Adaptivity, [&] { adapt.update(sim, 0, events, BudgetRule::Free); });
-        for (const HierarchyEvent& e : events) {
-          st.splits += e.kind == "split";
-          writer.event(e);
-        }
+        record_events(events, writer, st);
         events.clear();
         st.energies = hierarchy_energies(sim);
       } else {
@@ -538,11 +544,7 @@ RunSummary execute(const Scenario& input, const RunOptions& options, const Check
         ++(budget == BudgetRule::Shed ? st.budget_shed : st.budget_hold);
       }
       timing.phase(Task::Adaptivity, [&] { adapt.update(sim, frame, events, budget); });
-      for (const HierarchyEvent& e : events) {
-        st.splits += e.kind == "split";
-        st.merges += e.kind == "merge";
-        writer.event(e);
-      }
+      record_events(events, writer, st);
       st.max_displacement = std::max(st.max_displacement, max_active_displacement(sim));
       folder.check_intact();
       writer.write(frame, time, seconds_since(tf), st.energies, timing);

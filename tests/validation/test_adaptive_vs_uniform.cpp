@@ -94,6 +94,26 @@ Curves run_both(const Scenario& input) {
   return c;
 }
 
+// The adaptive curve against the finest level alone: mean and period of each, the largest
+// difference at any sample and the uniform run's peak.
+struct Agreement {
+  Oscillation adaptive, uniform;
+  double worst = 0, peak = 0, dstatic = 0, df = 0;
+};
+
+Agreement agreement(const Curves& c) {
+  Agreement g;
+  const double sample = c.t[1] - c.t[0];
+  g.adaptive = measure_oscillation(c.adaptive, sample);
+  g.uniform = measure_oscillation(c.uniform, sample);
+  for (size_t k = 0; k < c.t.size(); ++k)
+    g.worst = std::max(g.worst, std::abs(c.adaptive[k] - c.uniform[k]));
+  g.peak = peak_value(c.uniform);
+  g.dstatic = g.adaptive.mean / g.uniform.mean - 1;
+  g.df = g.adaptive.frequency / g.uniform.frequency - 1;
+  return g;
+}
+
 validation::Check check(const std::string& id, const std::string& title,
                         const std::string& quantity, double measured, double lower, double upper) {
   validation::Check c;
@@ -134,14 +154,9 @@ constexpr double kThreeD = 10.001;  // Hz, validation.md §2.2/§2.3 (C3D10 h = 
 TEST(AdaptiveVsUniform, AdaptiveBeamFollowsTheFinestLevelAlone) {
   const Scenario sc = beam_adaptive({});
   const Curves c = run_both(sc);
-  const double sample = c.t[1] - c.t[0];
-  const Oscillation a = measure_oscillation(c.adaptive, sample);
-  const Oscillation u = measure_oscillation(c.uniform, sample);
-  double worst = 0;
-  for (size_t k = 0; k < c.t.size(); ++k)
-    worst = std::max(worst, std::abs(c.adaptive[k] - c.uniform[k]));
-  const double peak = peak_value(c.uniform);
-  const double dstatic = a.mean / u.mean - 1, df = a.frequency / u.frequency - 1;
+  const Agreement g = agreement(c);
+  const Oscillation &a = g.adaptive, &u = g.uniform;
+  const double worst = g.worst, peak = g.peak, dstatic = g.dstatic, df = g.df;
   const double active = static_cast<double>(c.max_fine_active) / c.fine_points;
   std::printf(
       "adaptive vs L2 alone: static %.4e / %.4e m (%+.2f %%), f1 %.4f / %.4f Hz (%+.2f "
@@ -237,15 +252,9 @@ TEST(AdaptiveVsUniform, AdaptiveBeamFollowsTheFinestLevelAlone) {
 TEST(AdaptiveVsUniform, PredictionRemovesTheStartUpLag) {
   const Scenario sc = beam_adaptive({"adaptivity.space.predict=true"});
   const Curves c = run_both(sc);
-  const double sample = c.t[1] - c.t[0];
-  const Oscillation a = measure_oscillation(c.adaptive, sample);
-  const Oscillation u = measure_oscillation(c.uniform, sample);
-  double worst = 0;
-  for (size_t k = 0; k < c.t.size(); ++k)
-    worst = std::max(worst, std::abs(c.adaptive[k] - c.uniform[k]));
-  const double peak = peak_value(c.uniform);
+  const Agreement g = agreement(c);
+  const double worst = g.worst, peak = g.peak, dstatic = g.dstatic, df = g.df;
   const double first = c.adaptive[kChunks - 1] / c.uniform[kChunks - 1];
-  const double dstatic = a.mean / u.mean - 1, df = a.frequency / u.frequency - 1;
   char note[400];
   std::snprintf(note, sizeof note,
                 "tip at the end of the first frame %.3e / %.3e m (adaptive / L2 alone); over "
