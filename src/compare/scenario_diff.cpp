@@ -13,7 +13,8 @@ nlohmann::json parse(const YamlText& yaml) {
 
 // Where a run writes and how often it checkpoints change no result.
 bool is_output_place(const std::string& path, const std::string&) {
-  return path == "output.dir" || path == "output.checkpoint_every";
+  return path == "output.dir" || path == "output.checkpoint_every" ||
+         path == "output.compression";
 }
 
 }  // namespace

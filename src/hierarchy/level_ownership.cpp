@@ -34,13 +34,6 @@ std::array<double, 4> uniform_bary(std::uint64_t key) {
   return w;
 }
 
-// The tet of a level holding x, or -1 when x is outside that level's mesh: independent meshes
-// of one object do not share their boundary, and a level claims only what its tets cover.
-std::int32_t inside_tet(const TetLocator& locator, const Vec3& x) {
-  const TetLocation at = locator.locate(x);
-  return at.inside() ? at.tet : -1;
-}
-
 double mean_tet_volume(const TetMesh& m) {
   double v = 0;
   for (const Tet& t : m.tets) v += tet_volume(m, t);
@@ -69,7 +62,9 @@ LevelOwnership::LevelOwnership(const Hierarchy& h)
         for (int a = 0; a < 4; ++a) x += w[a] * mesh.points[mesh.tets[t][a]];
         std::int32_t* at = &where_[l][static_cast<std::size_t>(s) * levels_];
         for (int m = 0; m < levels_; ++m)
-          at[m] = m == l ? static_cast<std::int32_t>(t) : inside_tet(locators[m], x);
+          // -1 outside level m's mesh: independent meshes of one object do not share their
+          // boundary, and a level claims only what its tets cover.
+          at[m] = m == l ? static_cast<std::int32_t>(t) : locators[m].containing(x);
       }
   }
 }

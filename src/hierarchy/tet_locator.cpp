@@ -111,6 +111,28 @@ void TetLocator::consider(int t, const Vec3& p, TetLocation& best, double& best_
   }
 }
 
+// Every tet containing p overlaps p's cell (its bounding box holds p), so that cell decides,
+// and no distance is needed: the containing tet with the largest smallest coordinate, ties to
+// the lowest index, as locate() chooses (the two can differ only for a point within rounding of
+// a face shared by two tets, where locate() skips a tet whose box misses p by that rounding).
+int TetLocator::containing(const Vec3& p) const {
+  const auto c = cell_of(p);
+  const int cell = cell_index(c[0], c[1], c[2]);
+  int best = -1;
+  double best_min = 0;
+  for (int s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
+    const int t = cell_tets_[s];
+    const auto b = barycentric(t, p);
+    const double m = *std::min_element(b.begin(), b.end());
+    if (m < -kInsideTolerance) continue;
+    if (best < 0 || m > best_min || (m == best_min && t < best)) {
+      best = t;
+      best_min = m;
+    }
+  }
+  return best;
+}
+
 TetLocation TetLocator::locate(const Vec3& p) const {
   TetLocation best;
   double best_key = 0;

@@ -1,6 +1,6 @@
 #pragma once
 // ParaView time series (product.md "What a run writes"): frames/frame_NNNNNN.vtm with one
-// UnstructuredGrid block per level (binary, zlib), optionally followed by the PolyData blocks
+// UnstructuredGrid block per level (binary, compressed: LZ4 unless asked otherwise), optionally followed by the PolyData blocks
 // `surface` (the object's skin) and `tool`, and frames.pvd listing every frame with its
 // simulated time at full precision. The .pvd is rewritten after each frame (write to a
 // temporary file, then rename) so a run killed or failed mid-way leaves a valid series.
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "io/frame_data.hpp"
+#include "scenario/scenario.hpp"
 
 class vtkMultiBlockDataSet;
 
@@ -17,7 +18,8 @@ namespace mrsim {
 
 class VtkSeriesWriter {
  public:
-  explicit VtkSeriesWriter(std::filesystem::path out_dir);
+  explicit VtkSeriesWriter(std::filesystem::path out_dir,
+                           FrameCompression compression = FrameCompression::Lz4);
   /// Writes one frame (all levels, then the `surface` block when `surface` is given and the
   /// `tool` block when `tools` is not empty) and updates frames.pvd. Throws RunError on I/O
   /// failure, std::invalid_argument (before writing anything) on inconsistent sizes.
@@ -36,6 +38,7 @@ class VtkSeriesWriter {
   void write_pvd() const;
   void write_complete(const std::filesystem::path& relative, vtkMultiBlockDataSet* blocks) const;
   std::filesystem::path out_dir_;
+  FrameCompression compression_;
   std::vector<Entry> entries_;
 };
 

@@ -107,11 +107,14 @@ struct TimeAdaptivitySpec {
   double velocity_change = 0.01;  // β of method.md §5.2 (dimensionless)
 };
 
+enum class FrameCompression { Lz4, Zlib, None };
+
 struct OutputSpec {
   std::filesystem::path dir;  // output folder
   int every = 1;              // write a VTK frame every N display frames
   bool vtk = true;            // write frames.pvd and frames/
   int checkpoint_every = 0;   // write checkpoint.h5 every N display frames; 0: only when interrupted
+  FrameCompression compression = FrameCompression::Lz4;  // of the frames' binary data
 };
 
 struct Scenario {

@@ -130,9 +130,15 @@ std::vector<ToolSpec> tool_specs(const json& resolved, const std::filesystem::pa
   return tools;
 }
 
+FrameCompression frame_compression(const std::string& name) {
+  if (name == "zlib") return FrameCompression::Zlib;
+  if (name == "none") return FrameCompression::None;
+  return FrameCompression::Lz4;  // the schema allows nothing else
+}
+
 OutputSpec output_spec(const json& o) {
   return {o["dir"].get<std::string>(), o["every"].get<int>(), o["vtk"].get<bool>(),
-          o["checkpoint_every"].get<int>()};
+          o["checkpoint_every"].get<int>(), frame_compression(o["compression"].get<std::string>())};
 }
 
 }  // namespace

@@ -142,7 +142,7 @@ class FrameWriter {
       log_ = std::make_unique<Hdf5Log>(sc.output.dir / "log.h5", header);
     }
     if (sc.output.vtk) {
-      vtk_ = std::make_unique<VtkSeriesWriter>(sc.output.dir);
+      vtk_ = std::make_unique<VtkSeriesWriter>(sc.output.dir, sc.output.compression);
       if (resume) vtk_->resume(vtk_frames_up_to(sc, resume->run.frame), resume->run.frame);
     }
   }

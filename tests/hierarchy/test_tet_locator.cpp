@@ -76,3 +76,28 @@ TEST(TetLocator, OutsidePointsGetTheNearestTetWithSignedCoordinates) {
   }
   EXPECT_GT(outside, 100);
 }
+
+// containing() is locate() without the nearest-tet search: the same tet inside, -1 outside
+// (level ownership relies on it, hierarchy/level_ownership.cpp). The jittered box is not convex,
+// so points between its dents are outside too. Vertices are included: a point on shared faces.
+TEST(TetLocator, ContainingAgreesWithLocateInsideAndIsMinusOneOutside) {
+  const TetMesh m = jittered_box();
+  const TetLocator loc(m);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> d(-0.1, 1.1);
+  int inside = 0, outside = 0;
+  auto check = [&](const Vec3& p) {
+    const TetLocation l = loc.locate(p);
+    if (l.inside()) {
+      ++inside;
+      EXPECT_EQ(loc.containing(p), l.tet) << p.transpose();
+    } else {
+      ++outside;
+      EXPECT_EQ(loc.containing(p), -1) << p.transpose();
+    }
+  };
+  for (int k = 0; k < 3000; ++k) check(Vec3(d(rng), d(rng) * 0.6, d(rng) * 0.4));
+  for (const Vec3& p : m.points) check(p);
+  EXPECT_GT(inside, 2000);
+  EXPECT_GT(outside, 500);
+}

@@ -99,7 +99,7 @@ TEST(SchemaValidator, TextIsValidUtf8WithoutControlCharacters) {
 
 TEST(SchemaValidator, UnknownKeyWithoutCloseMatchListsTheKnownKeys) {
   EXPECT_INPUT_ERROR(validate_text(kHead + "material: {lambda: 1, mu: 1}\noutput: {zzz: 1}\n"),
-                     "output.zzz: unknown key; expected one of: checkpoint_every, dir, every, vtk");
+                     "output.zzz: unknown key; expected one of: checkpoint_every, compression, dir, every, vtk");
 }
 
 TEST(SchemaValidator, AllProblemsAreReportedInSourceOrder) {
