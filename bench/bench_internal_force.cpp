@@ -9,6 +9,7 @@
 
 #include "core/parallel.hpp"
 #include "mesh/box_mesh.hpp"
+#include "physics/green_nodal_forces.hpp"
 #include "physics/internal_force.hpp"
 
 using namespace mrsim;
@@ -52,6 +53,42 @@ void bench_forces(benchmark::State& state, StrainMeasure strain, bool damped) {
   state.counters["tets"] = model.num_tets();
 }
 
+// The Green–Lagrange per-tet pass alone (no gather), one thread, for each build of the kernel:
+// what the AVX2 build chosen at run time gains over baseline x86-64 (same bits).
+void bench_green_pass(benchmark::State& state, bool avx2, bool damped) {
+#if defined(__x86_64__)
+  if (avx2 && !__builtin_cpu_supports("avx2")) {
+    state.SkipWithError("no AVX2 on this processor");
+    return;
+  }
+#endif
+  MaterialLaw law;
+  law.strain = StrainMeasure::GreenLagrange;
+  law.lambda = 5.0e4;
+  law.mu = 1.0e4;
+  if (damped) law.psi = 20;
+  const LevelModel model = build_level_model(mesh(), law);
+  std::vector<double> u(3 * model.num_points()), v(u.size());
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> d(-1e-3, 1e-3);
+  for (std::size_t i = 0; i < u.size(); ++i) u[i] = d(rng), v[i] = d(rng);
+  std::vector<int> tets(model.num_tets());
+  for (int t = 0; t < model.num_tets(); ++t) tets[t] = t;
+  std::vector<double> out(12 * tets.size());
+  const GreenKernelData data = green_kernel_data(model);
+  const auto kernel = avx2 ? &green_nodal_forces_avx2 : &green_nodal_forces_baseline;
+  for (auto _ : state) {
+    kernel(data, tets.data(), static_cast<int>(tets.size()),
+           reinterpret_cast<const double(*)[3]>(u.data()),
+           reinterpret_cast<const double(*)[3]>(v.data()),
+           reinterpret_cast<double(*)[4][3]>(out.data()));
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.counters["tet_updates_per_s"] = benchmark::Counter(
+      static_cast<double>(state.iterations()) * model.num_tets(), benchmark::Counter::kIsRate);
+}
+
 void threads_arg(benchmark::internal::Benchmark* b) {
   b->Arg(1);
   if (omp_get_num_procs() > 1) b->Arg(omp_get_num_procs());
@@ -65,5 +102,12 @@ BENCHMARK_CAPTURE(bench_forces, cauchy_damped, StrainMeasure::Cauchy, true)->App
 BENCHMARK_CAPTURE(bench_forces, green, StrainMeasure::GreenLagrange, false)->Apply(threads_arg);
 BENCHMARK_CAPTURE(bench_forces, green_damped, StrainMeasure::GreenLagrange, true)
     ->Apply(threads_arg);
+
+BENCHMARK_CAPTURE(bench_green_pass, baseline, false, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(bench_green_pass, baseline_damped, false, true)->Unit(benchmark::kMillisecond);
+#if defined(__x86_64__)
+BENCHMARK_CAPTURE(bench_green_pass, avx2, true, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(bench_green_pass, avx2_damped, true, true)->Unit(benchmark::kMillisecond);
+#endif
 
 BENCHMARK_MAIN();

@@ -1,144 +1,56 @@
 #include "physics/green_nodal_forces.hpp"
 
+#include "physics/green_kernel_data.hpp"
+
 namespace mrsim {
+
+#include "physics/green_block_kernel.inl"
+
+GreenKernelData green_kernel_data(const LevelModel& m) {
+  return {reinterpret_cast<const double(*)[4][3]>(m.geo.grad.data()),
+          reinterpret_cast<const int(*)[4]>(m.geo.tets.data()),
+          m.geo.volume.data(),
+          m.law.lambda,
+          m.law.mu,
+          m.law.phi,
+          m.law.psi};
+}
 
 namespace {
 
-constexpr int kBlock = 8;
+static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(TetGradients) == 12 * sizeof(double) &&
+              sizeof(Tet) == 4 * sizeof(int));
 
-// Eigen's order of evaluation for 3 × 3 fixed-size doubles (what green_piola() compiles to on
-// x86-64): Aᵀ B sums its three terms left to right; A B and A v do so on rows 0 and 1 (SIMD
-// packets) but as a0 + (a1 + a2) on row 2 (the scalar remainder); a trace is a0 + (a1 + a2).
-inline double left(double a0, double a1, double a2) { return (a0 + a1) + a2; }
-inline double right(double a0, double a1, double a2) { return a0 + (a1 + a2); }
-inline double by_row(int i, double a0, double a1, double a2) {
-  return i < 2 ? left(a0, a1, a2) : right(a0, a1, a2);
+#if defined(MRSIM_AVX2_KERNEL)
+// Chosen once: the AVX2 build of the same kernel where the processor has it (the same bits:
+// GreenNodalForces.Avx2BuildGivesTheBaselineBits).
+bool use_avx2() {
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  return avx2;
 }
-
-#define MRSIM_IX(i, j) (3 * (i) + (j))
-
-// The block's shape gradients ∇N_a (component k of vertex a, per tet), gathered once.
-template <int B>
-void shape_gradients(const LevelModel& m, const int* tets, double (&g)[4][3][B]) {
-  for (int b = 0; b < B; ++b) {
-    const TetGradients& grad = m.geo.grad[tets[b]];
-    for (int a = 0; a < 4; ++a)
-      for (int k = 0; k < 3; ++k) g[a][k][b] = grad[a][k];
-  }
-}
-
-// G = Σ_a x_{v_a} ∇N_aᵀ (tet_gradient), for each tet of the block: the vertices' values are
-// gathered first, then the products run across the tets.
-template <int B>
-void gradients(const LevelModel& m, const int* tets, const Vec3* x, const double (&g)[4][3][B],
-               double (&G)[9][B]) {
-  double X[4][3][B];
-  for (int b = 0; b < B; ++b) {
-    const Tet& t = m.geo.tets[tets[b]];
-    for (int a = 0; a < 4; ++a)
-      for (int i = 0; i < 3; ++i) X[a][i][b] = x[t[a]][i];
-  }
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int b = 0; b < B; ++b) {
-        double s = X[0][i][b] * g[0][j][b];
-        s += X[1][i][b] * g[1][j][b];
-        s += X[2][i][b] * g[2][j][b];
-        s += X[3][i][b] * g[3][j][b];
-        G[MRSIM_IX(i, j)][b] = s;
-      }
-}
-
-template <int B, bool Damped>
-void block(const LevelModel& m, const int* tets, const Vec3* u, const Vec3* v, TetGradients* out) {
-  const double lambda = m.law.lambda, two_mu = 2.0 * m.law.mu;
-  const double phi = m.law.phi, two_psi = 2.0 * m.law.psi;
-  double g[4][3][B], G[9][B], Gd[9][B], F[9][B], S[9][B], P[9][B];
-  shape_gradients<B>(m, tets, g);
-  gradients<B>(m, tets, u, g, G);
-  if constexpr (Damped) gradients<B>(m, tets, v, g, Gd);
-  // E = ½ (G + Gᵀ + GᵀG); S = λ tr(E) I + 2μ E; F = I + G.
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int b = 0; b < B; ++b) {
-        const double gtg =
-            left(G[MRSIM_IX(0, i)][b] * G[MRSIM_IX(0, j)][b],
-                 G[MRSIM_IX(1, i)][b] * G[MRSIM_IX(1, j)][b],
-                 G[MRSIM_IX(2, i)][b] * G[MRSIM_IX(2, j)][b]);
-        S[MRSIM_IX(i, j)][b] = 0.5 * ((G[MRSIM_IX(i, j)][b] + G[MRSIM_IX(j, i)][b]) + gtg);
-      }
-  for (int b = 0; b < B; ++b) {
-    const double tr = right(S[0][b], S[4][b], S[8][b]);  // still E here
-    for (int k = 0; k < 9; ++k) S[k][b] = two_mu * S[k][b];
-    for (int k : {0, 4, 8}) S[k][b] += lambda * tr;
-  }
-  for (int k = 0; k < 9; ++k)
-    for (int b = 0; b < B; ++b) F[k][b] = G[k][b];
-  for (int k : {0, 4, 8})
-    for (int b = 0; b < B; ++b) F[k][b] = 1.0 + F[k][b];
-  if constexpr (Damped) {
-    // Ė = ½ (FᵀĠ + ĠᵀF); S += φ tr(Ė) I + 2ψ Ė.
-    double D[9][B];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        for (int b = 0; b < B; ++b)
-          D[MRSIM_IX(i, j)][b] = left(F[MRSIM_IX(0, i)][b] * Gd[MRSIM_IX(0, j)][b],
-                                      F[MRSIM_IX(1, i)][b] * Gd[MRSIM_IX(1, j)][b],
-                                      F[MRSIM_IX(2, i)][b] * Gd[MRSIM_IX(2, j)][b]);
-    for (int b = 0; b < B; ++b) {
-      double Ed[9];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          Ed[MRSIM_IX(i, j)] = 0.5 * (D[MRSIM_IX(i, j)][b] + D[MRSIM_IX(j, i)][b]);
-      const double tr = right(Ed[0], Ed[4], Ed[8]);
-      double V[9];
-      for (int k = 0; k < 9; ++k) V[k] = two_psi * Ed[k];
-      for (int k : {0, 4, 8}) V[k] += phi * tr;
-      for (int k = 0; k < 9; ++k) S[k][b] += V[k];
-    }
-  }
-  // P = -V F S, then the nodal forces P ∇N_a.
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int b = 0; b < B; ++b)
-        P[MRSIM_IX(i, j)][b] = by_row(i, F[MRSIM_IX(i, 0)][b] * S[MRSIM_IX(0, j)][b],
-                                      F[MRSIM_IX(i, 1)][b] * S[MRSIM_IX(1, j)][b],
-                                      F[MRSIM_IX(i, 2)][b] * S[MRSIM_IX(2, j)][b]);
-  for (int b = 0; b < B; ++b) {
-    const double scale = -m.geo.volume[tets[b]];
-    for (int k = 0; k < 9; ++k) P[k][b] *= scale;
-  }
-  double f[4][3][B];
-  for (int a = 0; a < 4; ++a)
-    for (int i = 0; i < 3; ++i)
-      for (int b = 0; b < B; ++b)
-        f[a][i][b] = by_row(i, P[MRSIM_IX(i, 0)][b] * g[a][0][b], P[MRSIM_IX(i, 1)][b] * g[a][1][b],
-                            P[MRSIM_IX(i, 2)][b] * g[a][2][b]);
-  for (int b = 0; b < B; ++b) {
-    TetGradients& out_b = out[tets[b]];
-    for (int a = 0; a < 4; ++a)
-      for (int i = 0; i < 3; ++i) out_b[a][i] = f[a][i][b];
-  }
-}
-
-#undef MRSIM_IX
-
-template <bool Damped>
-void all_blocks(const LevelModel& m, const int* tets, int count, const Vec3* u, const Vec3* v,
-                TetGradients* out) {
-  int k = 0;
-  for (; k + kBlock <= count; k += kBlock) block<kBlock, Damped>(m, tets + k, u, v, out);
-  for (; k < count; ++k) block<1, Damped>(m, tets + k, u, v, out);
-}
+#endif
 
 }  // namespace
 
 void green_nodal_forces(const LevelModel& m, const int* tets, int count, const Vec3* u,
                         const Vec3* v, TetGradients* out) {
-  if (m.law.damped())
-    all_blocks<true>(m, tets, count, u, v, out);
+  const GreenKernelData d = green_kernel_data(m);
+  const auto* u3 = reinterpret_cast<const double(*)[3]>(u);
+  const auto* v3 = reinterpret_cast<const double(*)[3]>(v);
+  auto* out3 = reinterpret_cast<double(*)[4][3]>(out);
+#if defined(MRSIM_AVX2_KERNEL)
+  if (use_avx2()) return green_nodal_forces_avx2(d, tets, count, u3, v3, out3);
+#endif
+  green_nodal_forces_baseline(d, tets, count, u3, v3, out3);
+}
+
+void green_nodal_forces_baseline(const GreenKernelData& d, const int* tets, int count,
+                                 const double (*u)[3], const double (*v)[3],
+                                 double (*out)[4][3]) {
+  if (d.phi != 0 || d.psi != 0)
+    all_blocks<true>(d, tets, count, u, v, out);
   else
-    all_blocks<false>(m, tets, count, u, v, out);
+    all_blocks<false>(d, tets, count, u, v, out);
 }
 
 }  // namespace mrsim

@@ -4,7 +4,9 @@
 // into SIMD arithmetic across tets (issue 17 point 4). Every tet's arithmetic is the one of
 // green_piola() in stress.hpp, operation for operation and in the same order, so the forces
 // are bit-identical to it (GreenNodalForces.BitIdenticalToGreenPiola), whatever the block a
-// tet falls in and whatever the thread count.
+// tet falls in and whatever the thread count. On x86-64 the AVX2 build of the same kernel runs
+// where the processor has it, with the same bits (green_block_kernel.inl).
+#include "physics/green_kernel_data.hpp"
 #include "physics/level_model.hpp"
 
 namespace mrsim {
@@ -13,5 +15,9 @@ namespace mrsim {
 /// only when the law is damped.
 void green_nodal_forces(const LevelModel& m, const int* tets, int count, const Vec3* u,
                         const Vec3* v, TetGradients* out);
+
+/// The level's arrays as the kernel builds read them (green_kernel_data.hpp): the same
+/// pass through green_nodal_forces_baseline() or green_nodal_forces_avx2() directly.
+GreenKernelData green_kernel_data(const LevelModel& m);
 
 }  // namespace mrsim

@@ -1,7 +1,7 @@
 // The blocked Green–Lagrange tet pass (physics/green_nodal_forces) against the per-tet
 // green_piola() it replaces in the force kernel: bit for bit, for every tet of lists of any
 // length and order (full blocks of eight and remainders), damped and undamped, at small and
-// large deformation. Bit-identity is what keeps every golden file and the thread-count
+// large deformation, for the baseline and the AVX2 builds of the kernel. Bit-identity is what keeps every golden file and the thread-count
 // independence of the results.
 #include <gtest/gtest.h>
 
@@ -26,6 +26,20 @@ TetGradients reference(const LevelModel& m, int t, const Vec3* u, const Vec3* v)
   TetGradients out;
   for (int a = 0; a < 4; ++a) out[a].noalias() = P * g[a];
   return out;
+}
+
+using Kernel = void (*)(const GreenKernelData&, const int*, int, const double (*)[3],
+                       const double (*)[3], double (*)[4][3]);
+
+// The kernel behind green_nodal_forces(), then each build of it called directly: the baseline
+// one and, where the processor has AVX2, the AVX2 one (the dispatcher picks that one here).
+std::vector<std::pair<const char*, Kernel>> kernels() {
+  std::vector<std::pair<const char*, Kernel>> k{{"dispatched", nullptr},
+                                                {"baseline", &green_nodal_forces_baseline}};
+#if defined(__x86_64__)
+  if (__builtin_cpu_supports("avx2")) k.emplace_back("avx2", &green_nodal_forces_avx2);
+#endif
+  return k;
 }
 
 TEST(GreenNodalForces, BitIdenticalToGreenPiola) {
@@ -56,16 +70,24 @@ TEST(GreenNodalForces, BitIdenticalToGreenPiola) {
       std::vector<int> some = all;
       std::shuffle(some.begin(), some.end(), rng);
       some.resize(some.size() / 3 * 2 + 1);
-      for (const std::vector<int>* list : {&all, &some}) {
-        std::vector<TetGradients> out(m.num_tets());
-        green_nodal_forces(m, list->data(), static_cast<int>(list->size()), u.data(), v.data(),
-                           out.data());
-        for (int t : *list) {
-          const TetGradients expected = reference(m, t, u.data(), v.data());
-          ASSERT_EQ(std::memcmp(&expected, &out[t], sizeof(TetGradients)), 0)
-              << "tet " << t << (damped ? " damped" : "") << " amplitude " << amplitude;
+      for (const auto& [name, kernel] : kernels())
+        for (const std::vector<int>* list : {&all, &some}) {
+          std::vector<TetGradients> out(m.num_tets());
+          const int n = static_cast<int>(list->size());
+          if (kernel == nullptr)
+            green_nodal_forces(m, list->data(), n, u.data(), v.data(), out.data());
+          else
+            kernel(green_kernel_data(m), list->data(), n,
+                   reinterpret_cast<const double(*)[3]>(u.data()),
+                   reinterpret_cast<const double(*)[3]>(v.data()),
+                   reinterpret_cast<double(*)[4][3]>(out.data()));
+          for (int t : *list) {
+            const TetGradients expected = reference(m, t, u.data(), v.data());
+            ASSERT_EQ(std::memcmp(&expected, &out[t], sizeof(TetGradients)), 0)
+                << name << " kernel, tet " << t << (damped ? " damped" : "") << " amplitude "
+                << amplitude;
+          }
         }
-      }
     }
 }
 

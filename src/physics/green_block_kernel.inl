@@ -1,0 +1,142 @@
+// The Green–Lagrange block kernel (green_nodal_forces.hpp), included by green_nodal_forces.cpp
+// (baseline x86-64) and green_nodal_forces_avx2.cpp (compiled with -mavx2). Plain arrays and
+// loops only, in an anonymous namespace: no inline function of a shared header (Eigen, std::)
+// is instantiated here, since the linker keeps one copy of such a function for the whole
+// program and it could be the AVX2 one. Without -mfma and with ISO C++'s -ffp-contract=off,
+// both compilations perform the same IEEE operations in the same order: the same bits.
+// No include guard: each including file gets its own copy.
+
+namespace {
+
+constexpr int kBlock = 8;
+
+// Eigen's order of evaluation for 3 × 3 fixed-size doubles (what green_piola() compiles to on
+// x86-64): Aᵀ B sums its three terms left to right; A B and A v do so on rows 0 and 1 (SIMD
+// packets) but as a0 + (a1 + a2) on row 2 (the scalar remainder); a trace is a0 + (a1 + a2).
+inline double left(double a0, double a1, double a2) { return (a0 + a1) + a2; }
+inline double right(double a0, double a1, double a2) { return a0 + (a1 + a2); }
+inline double by_row(int i, double a0, double a1, double a2) {
+  return i < 2 ? left(a0, a1, a2) : right(a0, a1, a2);
+}
+
+#define MRSIM_IX(i, j) (3 * (i) + (j))
+
+constexpr int kDiagonal[3] = {0, 4, 8};  // the diagonal of a 3 × 3 row-major matrix
+
+// The block's shape gradients ∇N_a (component k of vertex a, per tet), gathered once.
+template <int B>
+void shape_gradients(const GreenKernelData& m, const int* tets, double (&g)[4][3][B]) {
+  for (int b = 0; b < B; ++b) {
+    const double(&grad)[4][3] = m.grad[tets[b]];
+    for (int a = 0; a < 4; ++a)
+      for (int k = 0; k < 3; ++k) g[a][k][b] = grad[a][k];
+  }
+}
+
+// G = Σ_a x_{v_a} ∇N_aᵀ (tet_gradient), for each tet of the block: the vertices' values are
+// gathered first, then the products run across the tets.
+template <int B>
+void gradients(const GreenKernelData& m, const int* tets, const double (*x)[3],
+               const double (&g)[4][3][B], double (&G)[9][B]) {
+  double X[4][3][B];
+  for (int b = 0; b < B; ++b) {
+    const int(&t)[4] = m.tets[tets[b]];
+    for (int a = 0; a < 4; ++a)
+      for (int i = 0; i < 3; ++i) X[a][i][b] = x[t[a]][i];
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int b = 0; b < B; ++b) {
+        double s = X[0][i][b] * g[0][j][b];
+        s += X[1][i][b] * g[1][j][b];
+        s += X[2][i][b] * g[2][j][b];
+        s += X[3][i][b] * g[3][j][b];
+        G[MRSIM_IX(i, j)][b] = s;
+      }
+}
+
+template <int B, bool Damped>
+void block(const GreenKernelData& m, const int* tets, const double (*u)[3], const double (*v)[3],
+           double (*out)[4][3]) {
+  const double lambda = m.lambda, two_mu = 2.0 * m.mu;
+  const double phi = m.phi, two_psi = 2.0 * m.psi;
+  double g[4][3][B], G[9][B], Gd[9][B], F[9][B], S[9][B], P[9][B];
+  shape_gradients<B>(m, tets, g);
+  gradients<B>(m, tets, u, g, G);
+  if constexpr (Damped) gradients<B>(m, tets, v, g, Gd);
+  // E = ½ (G + Gᵀ + GᵀG); S = λ tr(E) I + 2μ E; F = I + G.
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int b = 0; b < B; ++b) {
+        const double gtg =
+            left(G[MRSIM_IX(0, i)][b] * G[MRSIM_IX(0, j)][b],
+                 G[MRSIM_IX(1, i)][b] * G[MRSIM_IX(1, j)][b],
+                 G[MRSIM_IX(2, i)][b] * G[MRSIM_IX(2, j)][b]);
+        S[MRSIM_IX(i, j)][b] = 0.5 * ((G[MRSIM_IX(i, j)][b] + G[MRSIM_IX(j, i)][b]) + gtg);
+      }
+  for (int b = 0; b < B; ++b) {
+    const double tr = right(S[0][b], S[4][b], S[8][b]);  // still E here
+    for (int k = 0; k < 9; ++k) S[k][b] = two_mu * S[k][b];
+    for (int k : kDiagonal) S[k][b] += lambda * tr;
+  }
+  for (int k = 0; k < 9; ++k)
+    for (int b = 0; b < B; ++b) F[k][b] = G[k][b];
+  for (int k : kDiagonal)
+    for (int b = 0; b < B; ++b) F[k][b] = 1.0 + F[k][b];
+  if constexpr (Damped) {
+    // Ė = ½ (FᵀĠ + ĠᵀF); S += φ tr(Ė) I + 2ψ Ė.
+    double D[9][B];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int b = 0; b < B; ++b)
+          D[MRSIM_IX(i, j)][b] = left(F[MRSIM_IX(0, i)][b] * Gd[MRSIM_IX(0, j)][b],
+                                      F[MRSIM_IX(1, i)][b] * Gd[MRSIM_IX(1, j)][b],
+                                      F[MRSIM_IX(2, i)][b] * Gd[MRSIM_IX(2, j)][b]);
+    for (int b = 0; b < B; ++b) {
+      double Ed[9];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          Ed[MRSIM_IX(i, j)] = 0.5 * (D[MRSIM_IX(i, j)][b] + D[MRSIM_IX(j, i)][b]);
+      const double tr = right(Ed[0], Ed[4], Ed[8]);
+      double V[9];
+      for (int k = 0; k < 9; ++k) V[k] = two_psi * Ed[k];
+      for (int k : kDiagonal) V[k] += phi * tr;
+      for (int k = 0; k < 9; ++k) S[k][b] += V[k];
+    }
+  }
+  // P = -V F S, then the nodal forces P ∇N_a.
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int b = 0; b < B; ++b)
+        P[MRSIM_IX(i, j)][b] = by_row(i, F[MRSIM_IX(i, 0)][b] * S[MRSIM_IX(0, j)][b],
+                                      F[MRSIM_IX(i, 1)][b] * S[MRSIM_IX(1, j)][b],
+                                      F[MRSIM_IX(i, 2)][b] * S[MRSIM_IX(2, j)][b]);
+  for (int b = 0; b < B; ++b) {
+    const double scale = -m.volume[tets[b]];
+    for (int k = 0; k < 9; ++k) P[k][b] *= scale;
+  }
+  double f[4][3][B];
+  for (int a = 0; a < 4; ++a)
+    for (int i = 0; i < 3; ++i)
+      for (int b = 0; b < B; ++b)
+        f[a][i][b] = by_row(i, P[MRSIM_IX(i, 0)][b] * g[a][0][b], P[MRSIM_IX(i, 1)][b] * g[a][1][b],
+                            P[MRSIM_IX(i, 2)][b] * g[a][2][b]);
+  for (int b = 0; b < B; ++b) {
+    double(&out_b)[4][3] = out[tets[b]];
+    for (int a = 0; a < 4; ++a)
+      for (int i = 0; i < 3; ++i) out_b[a][i] = f[a][i][b];
+  }
+}
+
+#undef MRSIM_IX
+
+template <bool Damped>
+void all_blocks(const GreenKernelData& m, const int* tets, int count, const double (*u)[3],
+                const double (*v)[3], double (*out)[4][3]) {
+  int k = 0;
+  for (; k + kBlock <= count; k += kBlock) block<kBlock, Damped>(m, tets + k, u, v, out);
+  for (; k < count; ++k) block<1, Damped>(m, tets + k, u, v, out);
+}
+
+
+}  // namespace

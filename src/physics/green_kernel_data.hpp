@@ -1,0 +1,22 @@
+#pragma once
+// What the Green–Lagrange block kernel reads, as plain arrays (physics/green_block_kernel.inl):
+// the same kernel is compiled for baseline x86-64 and for AVX2, and the two builds share no
+// inline code (see there).
+
+namespace mrsim {
+
+struct GreenKernelData {
+  const double (*grad)[4][3];  // ∇N_a of each tet
+  const int (*tets)[4];        // vertices of each tet
+  const double* volume;        // rest volume of each tet
+  double lambda, mu, phi, psi;
+};
+
+/// out[tets[k]][a] = -V P ∇N_a for k in [0, count): the baseline build of the kernel.
+void green_nodal_forces_baseline(const GreenKernelData& d, const int* tets, int count,
+                                 const double (*u)[3], const double (*v)[3], double (*out)[4][3]);
+/// The same kernel compiled with -mavx2 (x86-64 builds only; the caller checks the processor).
+void green_nodal_forces_avx2(const GreenKernelData& d, const int* tets, int count,
+                             const double (*u)[3], const double (*v)[3], double (*out)[4][3]);
+
+}  // namespace mrsim

@@ -1,0 +1,18 @@
+// The Green–Lagrange block kernel built with -mavx2 (src/CMakeLists.txt, x86-64 only): the eight
+// tets of a block go through 4-wide instead of 2-wide SIMD arithmetic. No FMA: the same bits as
+// the baseline build (green_block_kernel.inl).
+#include "physics/green_kernel_data.hpp"
+
+namespace mrsim {
+
+#include "physics/green_block_kernel.inl"
+
+void green_nodal_forces_avx2(const GreenKernelData& d, const int* tets, int count,
+                             const double (*u)[3], const double (*v)[3], double (*out)[4][3]) {
+  if (d.phi != 0 || d.psi != 0)
+    all_blocks<true>(d, tets, count, u, v, out);
+  else
+    all_blocks<false>(d, tets, count, u, v, out);
+}
+
+}  // namespace mrsim
