@@ -69,19 +69,28 @@ LevelOwnership::LevelOwnership(const Hierarchy& h)
   }
 }
 
-// A finer level claims x only inside its own mesh; level 0 takes the rest.
-int LevelOwnership::owner(const Hierarchy& h, const std::int32_t* at) const {
-  for (int m = levels_ - 1; m > 0; --m) {
-    if (at[m] < 0) continue;
-    const Tet& t = h.level(m).mesh->tets[at[m]];
-    bool covered = true;
-    for (int a = 0; a < 4; ++a) covered = covered && h.state(m, t[a]) != NodeState::Inactive;
-    if (covered) return m;
+void LevelOwnership::observe(const Hierarchy& h) {
+  covered_.resize(levels_);
+  for (int m = 0; m < levels_; ++m) {
+    const TetMesh& mesh = *h.level(m).mesh;
+    covered_[m].resize(mesh.tets.size());
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      bool covered = true;
+      for (int v : mesh.tets[t]) covered = covered && h.state(m, v) != NodeState::Inactive;
+      covered_[m][t] = covered;
+    }
   }
+}
+
+// A finer level claims x only inside its own mesh, where its tet has no inactive vertex;
+// level 0 takes the rest.
+int LevelOwnership::owner(const std::int32_t* at) const {
+  for (int m = levels_ - 1; m > 0; --m)
+    if (at[m] >= 0 && covered_[m][at[m]]) return m;
   return 0;
 }
 
-void LevelOwnership::shares(const Hierarchy& h, int level, std::vector<double>& share,
+void LevelOwnership::shares(int level, std::vector<double>& share,
                             std::vector<std::int8_t>& owner_level) const {
   const std::size_t tets = start_[level].size() - 1;
   share.resize(tets);
@@ -90,7 +99,7 @@ void LevelOwnership::shares(const Hierarchy& h, int level, std::vector<double>& 
   for (std::size_t t = 0; t < tets; ++t) {
     std::fill(count.begin(), count.end(), 0);
     for (std::int32_t s = start_[level][t]; s < start_[level][t + 1]; ++s)
-      ++count[owner(h, &where_[level][static_cast<std::size_t>(s) * levels_])];
+      ++count[owner(&where_[level][static_cast<std::size_t>(s) * levels_])];
     share[t] = static_cast<double>(count[level]) / (start_[level][t + 1] - start_[level][t]);
     // max_element: the first of equal counts, the coarser level.
     owner_level[t] =

@@ -21,19 +21,23 @@ class LevelOwnership {
   /// samples in all.
   explicit LevelOwnership(const Hierarchy& h);
 
-  /// For every tet of `level` in the hierarchy's current state: share[t], the fraction of it
+  /// Takes the hierarchy's current statuses: which tets of each level have no inactive vertex.
+  /// O(tets of all levels); call it before shares() whenever the statuses may have changed.
+  void observe(const Hierarchy& h);
+
+  /// For every tet of `level` in the statuses last observed: share[t], the fraction of it
   /// `level` simulates (0–1), and owner[t], the level that simulates most of it (the coarser one
   /// on a tie). O(its samples × levels).
-  void shares(const Hierarchy& h, int level, std::vector<double>& share,
-              std::vector<std::int8_t>& owner) const;
+  void shares(int level, std::vector<double>& share, std::vector<std::int8_t>& owner) const;
 
  private:
-  int owner(const Hierarchy& h, const std::int32_t* tets_at_sample) const;
+  int owner(const std::int32_t* tets_at_sample) const;
 
   int levels_ = 0;
   std::vector<std::vector<std::int32_t>> start_;  // [level][tet]: its first sample (CSR)
   // where_[l][s * levels_ + m]: the tet of level m holding sample s of level l.
   std::vector<std::vector<std::int32_t>> where_;
+  std::vector<std::vector<std::uint8_t>> covered_;  // [level][tet]: no inactive vertex (observe)
 };
 
 }  // namespace mrsim

@@ -242,14 +242,14 @@ class FrameWriter {
       if (sim_.state(l).free_point[p]) time_level_[l][p] = ta ? ta->level_of(l, p) : 0;
   }
 
-  // Per tet of level l: the share of it level l simulates (hierarchy/level_ownership.hpp).
-  void fill_simulated(int l) {
-    if (!ownership_) ownership_ = std::make_unique<LevelOwnership>(sim_.hierarchy());
-    ownership_->shares(sim_.hierarchy(), l, simulated_[l], simulated_by_[l]);
-  }
+  // Per tet of level l: the share of it level l simulates (hierarchy/level_ownership.hpp), in
+  // the statuses ownership_ last observed.
+  void fill_simulated(int l) { ownership_->shares(l, simulated_[l], simulated_by_[l]); }
 
   void write_vtk(int frame, double time) {
     sim_.fill_inactive();  // every level shows the whole deformed object
+    if (!ownership_) ownership_ = std::make_unique<LevelOwnership>(sim_.hierarchy());
+    ownership_->observe(sim_.hierarchy());
     std::vector<LevelFrameView> views(L_);
     for (int l = 0; l < L_; ++l) {
       const PointState& s = sim_.state(l);
