@@ -1,16 +1,16 @@
 #pragma once
 // ParaView time series (product.md "What a run writes"): frames/frame_NNNNNN.vtm with one
-// UnstructuredGrid block per level (binary, compressed: LZ4 unless asked otherwise), optionally followed by the PolyData blocks
-// `surface` (the object's skin) and `tool`, and frames.pvd listing every frame with its
-// simulated time at full precision. The .pvd is rewritten after each frame (write to a
-// temporary file, then rename) so a run killed or failed mid-way leaves a valid series.
+// UnstructuredGrid block per level (binary, LZ4 unless asked otherwise), optionally followed by
+// the PolyData blocks `surface` (the object's skin) and `tool`, and frames.pvd listing every
+// frame with its simulated time at full precision. The .pvd is rewritten after each frame (write
+// to a temporary file, then rename) so a run killed or failed mid-way leaves a valid series.
 #include <filesystem>
 #include <span>
 #include <utility>
 #include <vector>
 
 #include "io/frame_data.hpp"
-#include "scenario/scenario.hpp"
+#include "io/frame_compression.hpp"
 
 class vtkMultiBlockDataSet;
 

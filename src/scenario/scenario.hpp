@@ -17,6 +17,7 @@
 #include "mesh/mesh_reader.hpp"
 #include "physics/material_law.hpp"
 #include "hierarchy/coupling_kind.hpp"
+#include "io/frame_compression.hpp"
 #include "time/integrator_kind.hpp"
 
 namespace mrsim {
@@ -106,8 +107,6 @@ struct TimeAdaptivitySpec {
   bool enabled = false;
   double velocity_change = 0.01;  // β of method.md §5.2 (dimensionless)
 };
-
-enum class FrameCompression { Lz4, Zlib, None };
 
 struct OutputSpec {
   std::filesystem::path dir;  // output folder
