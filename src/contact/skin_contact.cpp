@@ -79,8 +79,10 @@ void SkinContact::near_tools(double t0, double t1, const std::vector<LevelFields
   double speed = 0;
   std::vector<Vec3> x(n);
   for (int s = 0; s < n; ++s) {
-    x[s] = skin_.rest[s] + map_.value(s, fields, false);
-    speed = std::max(speed, map_.value(s, fields, true).norm());
+    Vec3 u, v;
+    map_.values(s, fields, u, v);
+    x[s] = skin_.rest[s] + u;
+    speed = std::max(speed, v.norm());
   }
   out.resize(tools_.size());
   for (int k = 0; k < num_tools(); ++k) near_tool(k, t0, t1, x, speed, out[k]);

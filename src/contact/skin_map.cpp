@@ -65,4 +65,15 @@ Vec3 SkinMap::value(int s, const std::vector<LevelFields>& fields, bool velocity
   return x;
 }
 
+void SkinMap::values(int s, const std::vector<LevelFields>& fields, Vec3& u, Vec3& v) const {
+  u = Vec3::Zero();
+  v = Vec3::Zero();
+  for (const ActiveTerm* t = begin(s); t != end(s); ++t)
+    if (t->level >= 0) {
+      const LevelFields& f = fields[t->level];
+      u += t->weight * f.u[t->point];
+      v += t->weight * f.v[t->point];
+    }
+}
+
 }  // namespace mrsim

@@ -24,6 +24,8 @@ class SkinMap {
   int level(int s) const { return level_[s]; }
   /// Displacement (or velocity, with the v fields) of skin vertex s.
   Vec3 value(int s, const std::vector<LevelFields>& fields, bool velocity) const;
+  /// Both at once, in one pass over the row (the same sums as value()).
+  void values(int s, const std::vector<LevelFields>& fields, Vec3& u, Vec3& v) const;
   const ActiveTerm* begin(int s) const { return terms_.data() + start_[s]; }
   const ActiveTerm* end(int s) const { return terms_.data() + start_[s + 1]; }
 

@@ -295,8 +295,7 @@ void HierarchicalSimulation::skin_state(std::vector<Vec3>& u, std::vector<Vec3>&
   u.resize(n);
   v.resize(n);
   for (int s = 0; s < n; ++s) {
-    u[s] = contact_->map().value(s, fields_, false);
-    v[s] = contact_->map().value(s, fields_, true);
+    contact_->map().values(s, fields_, u[s], v[s]);
   }
 }
 
