@@ -18,15 +18,24 @@ int moving_level(const Hierarchy& h, const SkinBinding& b, int s) {
   return 0;
 }
 
-// Same active point reached through several ghosts: one term, so a row is short and the
-// forces it carries are summed in a fixed order.
-void merge_terms(std::vector<ActiveTerm>& row) {
-  auto key = [](const ActiveTerm& a) { return std::tuple(a.level, a.point); };
-  std::sort(row.begin(), row.end(),
-            [&](const ActiveTerm& a, const ActiveTerm& b) { return key(a) < key(b); });
+bool key_less(const ActiveTerm& a, const ActiveTerm& b) {
+  return std::tuple(a.level, a.point) < std::tuple(b.level, b.point);
+}
+
+// Sorts by (level, point), stably, and sums the terms of the same point in the order they came:
+// the same active point reached through several ghosts becomes one term, so a row is short and
+// the forces it carries are summed in a fixed order. Insertion sort: the rows are short and
+// made of sorted runs.
+void sort_and_merge(std::vector<ActiveTerm>& row) {
+  for (std::size_t i = 1; i < row.size(); ++i) {
+    const ActiveTerm t = row[i];
+    std::size_t j = i;
+    for (; j > 0 && key_less(t, row[j - 1]); --j) row[j] = row[j - 1];
+    row[j] = t;
+  }
   std::size_t n = 0;
   for (const ActiveTerm& t : row) {
-    if (n > 0 && key(row[n - 1]) == key(t))
+    if (n > 0 && row[n - 1].level == t.level && row[n - 1].point == t.point)
       row[n - 1].weight += t.weight;
     else
       row[n++] = t;
@@ -36,23 +45,84 @@ void merge_terms(std::vector<ActiveTerm>& row) {
 
 }  // namespace
 
+// Σ weights[k] × rows[k], merged (terms of the rows in order, then sort_and_merge).
+void SkinMap::combine(const Span* rows, const double* weights, int count,
+                      std::vector<ActiveTerm>& out) {
+  out.clear();
+  for (int k = 0; k < count; ++k)
+    for (int q = rows[k].begin; q < rows[k].end; ++q) {
+      ActiveTerm t = memo_terms_[q];
+      t.weight *= weights[k];
+      out.push_back(t);
+    }
+  sort_and_merge(out);
+}
+
+// The row of a point (method.md §4.1, §4.8; hierarchy/active_row.hpp): itself when active, the
+// support when held, else its interpolation tet's rows weighted by its coordinates. Each point's
+// row is built once per build (ghost chains share their sources).
+SkinMap::Span SkinMap::point_row(const Hierarchy& h,
+                                 const std::vector<const std::vector<std::uint8_t>*>& free,
+                                 int l, int p) {
+  if (memo_at_[l][p] >= 0) return memo_span_[memo_at_[l][p]];
+  std::vector<ActiveTerm> row;
+  const NodeState s = h.state(l, p);
+  if (s == NodeState::Active) {
+    row.push_back({l, p, 1.0});
+  } else if (!(*free[l])[p]) {  // a Dirichlet ghost or inactive point stays at rest
+    row.push_back({-1, p, 1.0});
+  } else {
+    const bool finer = s == NodeState::GhostSub;
+    const Embedding& e = finer ? h.links(l).child_tet : h.links(l).parent_tet;
+    const int source = finer ? l + 1 : l - 1;
+    const Tet& t = h.level(source).mesh->tets[e.tet[p]];
+    Span rows[4];
+    double weights[4];
+    int count = 0;
+    for (int k = 0; k < 4; ++k)
+      if (e.bary[p][k] != 0) {
+        rows[count] = point_row(h, free, source, t[k]);
+        weights[count++] = e.bary[p][k];
+      }
+    combine(rows, weights, count, row);
+  }
+  const Span span{static_cast<int>(memo_terms_.size()),
+                  static_cast<int>(memo_terms_.size() + row.size())};
+  memo_terms_.insert(memo_terms_.end(), row.begin(), row.end());
+  memo_at_[l][p] = static_cast<int>(memo_span_.size());
+  memo_span_.push_back(span);
+  memo_points_.emplace_back(l, p);
+  return span;
+}
+
 void SkinMap::build(const Hierarchy& h, const SkinBinding& b,
                     const std::vector<const std::vector<std::uint8_t>*>& free_point) {
   const int n = static_cast<int>(b.tet[0].size());
+  memo_at_.resize(h.num_levels());
+  for (int l = 0; l < h.num_levels(); ++l) memo_at_[l].resize(h.num_points(l), -1);
   level_.resize(n);
   start_.assign(1, 0);
   terms_.clear();
   for (int s = 0; s < n; ++s) {
     const int l = moving_level(h, b, s);
     level_[s] = l;
-    row_.clear();
     const Tet& t = h.level(l).mesh->tets[b.tet[l][s]];
+    Span rows[4];
+    double weights[4];
+    int count = 0;
     for (int k = 0; k < 4; ++k)
-      if (b.bary[l][s][k] != 0) append_active_row(h, free_point, l, t[k], b.bary[l][s][k], row_);
-    merge_terms(row_);
+      if (b.bary[l][s][k] != 0) {
+        rows[count] = point_row(h, free_point, l, t[k]);
+        weights[count++] = b.bary[l][s][k];
+      }
+    combine(rows, weights, count, row_);
     terms_.insert(terms_.end(), row_.begin(), row_.end());
     start_.push_back(static_cast<int>(terms_.size()));
   }
+  for (const auto& [l, p] : memo_points_) memo_at_[l][p] = -1;
+  memo_points_.clear();
+  memo_span_.clear();
+  memo_terms_.clear();
 }
 
 Vec3 SkinMap::value(int s, const std::vector<LevelFields>& fields, bool velocity) const {
