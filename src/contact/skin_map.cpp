@@ -22,40 +22,30 @@ bool key_less(const ActiveTerm& a, const ActiveTerm& b) {
   return std::tuple(a.level, a.point) < std::tuple(b.level, b.point);
 }
 
-// Sorts by (level, point), stably, and sums the terms of the same point in the order they came:
-// the same active point reached through several ghosts becomes one term, so a row is short and
-// the forces it carries are summed in a fixed order. Insertion sort: the rows are short and
-// made of sorted runs.
-void sort_and_merge(std::vector<ActiveTerm>& row) {
-  for (std::size_t i = 1; i < row.size(); ++i) {
-    const ActiveTerm t = row[i];
-    std::size_t j = i;
-    for (; j > 0 && key_less(t, row[j - 1]); --j) row[j] = row[j - 1];
-    row[j] = t;
-  }
-  std::size_t n = 0;
-  for (const ActiveTerm& t : row) {
-    if (n > 0 && row[n - 1].level == t.level && row[n - 1].point == t.point)
-      row[n - 1].weight += t.weight;
-    else
-      row[n++] = t;
-  }
-  row.resize(n);
-}
-
 }  // namespace
 
-// Σ weights[k] × rows[k], merged (terms of the rows in order, then sort_and_merge).
+// Σ weights[k] × rows[k]: the rows (each sorted by (level, point), one term per point) merged in
+// that order, the same point's terms summed in the order of the rows, so a row is short and the
+// forces it carries are summed in a fixed order.
 void SkinMap::combine(const Span* rows, const double* weights, int count,
                       std::vector<ActiveTerm>& out) {
   out.clear();
-  for (int k = 0; k < count; ++k)
-    for (int q = rows[k].begin; q < rows[k].end; ++q) {
-      ActiveTerm t = memo_terms_[q];
-      t.weight *= weights[k];
+  int next[4];
+  for (int k = 0; k < count; ++k) next[k] = rows[k].begin;
+  for (;;) {
+    int pick = -1;  // the row holding the smallest key; ties to the first row
+    for (int k = 0; k < count; ++k)
+      if (next[k] < rows[k].end &&
+          (pick < 0 || key_less(memo_terms_[next[k]], memo_terms_[next[pick]])))
+        pick = k;
+    if (pick < 0) return;
+    ActiveTerm t = memo_terms_[next[pick]++];
+    t.weight *= weights[pick];
+    if (!out.empty() && out.back().level == t.level && out.back().point == t.point)
+      out.back().weight += t.weight;
+    else
       out.push_back(t);
-    }
-  sort_and_merge(out);
+  }
 }
 
 // The row of a point (method.md §4.1, §4.8; hierarchy/active_row.hpp): itself when active, the
