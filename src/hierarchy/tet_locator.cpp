@@ -113,8 +113,7 @@ void TetLocator::consider(int t, const Vec3& p, TetLocation& best, double& best_
 
 // Every tet containing p overlaps p's cell (its bounding box holds p), so that cell decides,
 // and no distance is needed: the containing tet with the largest smallest coordinate, ties to
-// the lowest index, as locate() chooses (the two can differ only for a point within rounding of
-// a face shared by two tets, where locate() skips a tet whose box misses p by that rounding).
+// the lowest index.
 int TetLocator::containing(const Vec3& p) const {
   const auto c = cell_of(p);
   const int cell = cell_index(c[0], c[1], c[2]);
@@ -134,6 +133,8 @@ int TetLocator::containing(const Vec3& p) const {
 }
 
 TetLocation TetLocator::locate(const Vec3& p) const {
+  // Inside: the containing tet, without the distances of the cell's other tets.
+  if (const int t = containing(p); t >= 0) return {t, barycentric(t, p), 0.0};
   TetLocation best;
   double best_key = 0;
   const auto c = cell_of(p);

@@ -22,8 +22,8 @@ class TetLocator {
  public:
   explicit TetLocator(const TetMesh& mesh);
   TetLocation locate(const Vec3& p) const;
-  /// The tet that locate(p) returns when p is inside the mesh (up to rounding on a face), or -1
-  /// when it is outside; no search for the nearest tet.
+  /// The tet holding p with the largest smallest barycentric coordinate (ties: lowest index), or
+  /// -1 when p is outside; no search for the nearest tet. locate() answers with it inside.
   int containing(const Vec3& p) const;
   /// Barycentric coordinates of p in tet t (signed).
   std::array<double, 4> barycentric(int t, const Vec3& p) const;

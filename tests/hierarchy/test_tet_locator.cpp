@@ -77,24 +77,30 @@ TEST(TetLocator, OutsidePointsGetTheNearestTetWithSignedCoordinates) {
   EXPECT_GT(outside, 100);
 }
 
-// containing() is locate() without the nearest-tet search: the same tet inside, -1 outside
-// (level ownership relies on it, hierarchy/level_ownership.cpp). The jittered box is not convex,
-// so points between its dents are outside too. Vertices are included: a point on shared faces.
-TEST(TetLocator, ContainingAgreesWithLocateInsideAndIsMinusOneOutside) {
+// containing() (and locate() inside the mesh, which uses it) against every tet: the tet with the
+// largest smallest barycentric coordinate among those holding the point, ties to the lowest
+// index; -1 outside (level ownership relies on it). The jittered box is not convex, so points
+// between its dents are outside too. Vertices are included: points on shared faces.
+TEST(TetLocator, ContainingIsTheBestHoldingTetAndMinusOneOutside) {
   const TetMesh m = jittered_box();
   const TetLocator loc(m);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> d(-0.1, 1.1);
   int inside = 0, outside = 0;
   auto check = [&](const Vec3& p) {
-    const TetLocation l = loc.locate(p);
-    if (l.inside()) {
-      ++inside;
-      EXPECT_EQ(loc.containing(p), l.tet) << p.transpose();
-    } else {
-      ++outside;
-      EXPECT_EQ(loc.containing(p), -1) << p.transpose();
+    int best = -1;
+    double best_min = 0;
+    for (int t = 0; t < static_cast<int>(m.tets.size()); ++t) {
+      const auto b = loc.barycentric(t, p);
+      const double low = *std::min_element(b.begin(), b.end());
+      if (low >= -1e-12 && (best < 0 || low > best_min)) best = t, best_min = low;
     }
+    EXPECT_EQ(loc.containing(p), best) << p.transpose();
+    EXPECT_EQ(loc.locate(p).inside(), best >= 0) << p.transpose();
+    if (best >= 0) {
+      EXPECT_EQ(loc.locate(p).tet, best) << p.transpose();
+    }
+    ++(best >= 0 ? inside : outside);
   };
   for (int k = 0; k < 3000; ++k) check(Vec3(d(rng), d(rng) * 0.6, d(rng) * 0.4));
   for (const Vec3& p : m.points) check(p);
