@@ -50,9 +50,13 @@ std::pair<double, double> top_ritz(const std::vector<double>& alpha,
 }
 
 // Lanczos for the largest algebraic eigenvalue of M^-1/2 A M^-1/2 (A of apply()), from a fixed
-// start vector; the Ritz value plus its residual bound (errs upwards).
+// start vector; the Ritz value plus its residual bound (errs upwards). With `above`, it stops as
+// soon as the largest Ritz value exceeds it and returns that value: the largest eigenvalue of the
+// growing tridiagonal never decreases (Cauchy interlacing), so the full run would have returned
+// more than `above` too.
 double lanczos_top(const PointAdjacency& adj, const std::vector<Term>& terms,
-                   const std::vector<double>& mass, double tolerance, int max_iterations) {
+                   const std::vector<double>& mass, double tolerance, int max_iterations,
+                   double above = std::numeric_limits<double>::infinity()) {
   const int n = adj.num_points(), dofs = 3 * n;
   Eigen::VectorXd s(n);
   for (int i = 0; i < n; ++i) s[i] = mass[i] > 0 ? 1 / std::sqrt(mass[i]) : 0;
@@ -72,6 +76,7 @@ double lanczos_top(const PointAdjacency& adj, const std::vector<Term>& terms,
     if (it % 5 == 4 || last || beta.back() == 0) {
       const auto [theta, residual] = top_ritz(alpha, beta);
       estimate = theta + residual;
+      if (theta > above) return theta;
       if (residual <= tolerance * std::abs(theta) || beta.back() == 0) break;
     }
     q_prev.swap(q);
@@ -112,7 +117,7 @@ double combined_step_limit(const PointAdjacency& adj, const std::vector<Mat3>& K
   if (adj.num_points() == 0 || C.empty() || damping <= 0) return apart(stiffness, 0.0);
   const double own = filtered ? 1.0 : -1.0;
   auto stable = [&](double dt) {
-    return lanczos_top(adj, {{&K, own, dt * dt}, {&C, -1.0, 2 * dt}}, mass, 1e-3, 300) <= 4.0;
+    return lanczos_top(adj, {{&K, own, dt * dt}, {&C, -1.0, 2 * dt}}, mass, 1e-3, 300, 4.0) <= 4.0;
   };
   double lo = apart(stiffness, damping), hi = 2 * lo;
   if (!std::isfinite(lo)) return inf;
