@@ -10,13 +10,14 @@
 #include "contact/skin_binding.hpp"
 #include "hierarchy/active_row.hpp"
 #include "hierarchy/ghost_update.hpp"
+#include "hierarchy/merged_rows.hpp"
 
 namespace mrsim {
 
 class SkinMap {
  public:
-  /// Rebuilt after every topology change; O(skin vertices × row length). The row of every point
-  /// it meets is built once per build and reused by the skin vertices and ghosts that need it.
+  /// Rebuilt after every topology change; O(skin vertices × row length). Each point's row is built
+  /// once per build and shared (hierarchy/merged_rows.hpp).
   void build(const Hierarchy& h, const SkinBinding& binding,
              const std::vector<const std::vector<std::uint8_t>*>& free_point);
 
@@ -36,17 +37,7 @@ class SkinMap {
   std::vector<ActiveTerm> terms_;  // merged per (level, point), sorted
   std::vector<ActiveTerm> row_;    // scratch
 
-  // This build's rows of points (level, point): [begin, end) in memo_terms_, merged and sorted.
-  struct Span {
-    int begin = 0, end = 0;
-  };
-  Span point_row(const Hierarchy& h, const std::vector<const std::vector<std::uint8_t>*>& free,
-                 int level, int point);
-  void combine(const Span* rows, const double* weights, int count, std::vector<ActiveTerm>& out);
-  std::vector<std::vector<int>> memo_at_;  // [level][point]: index into memo_span_, or -1
-  std::vector<Span> memo_span_;
-  std::vector<ActiveTerm> memo_terms_;
-  std::vector<std::pair<int, int>> memo_points_;  // to clear memo_at_ after the build
+  MergedRows rows_;  // the points' rows, shared within a build
 };
 
 }  // namespace mrsim
