@@ -42,12 +42,12 @@ MergedRows::Span MergedRows::row(const Hierarchy& h,
   if (static_cast<int>(at_.size()) != h.num_levels()) at_.resize(h.num_levels());
   if (static_cast<int>(at_[l].size()) != h.num_points(l)) at_[l].assign(h.num_points(l), -1);
   if (at_[l][p] >= 0) return spans_[at_[l][p]];
-  std::vector<ActiveTerm> row;
   const NodeState s = h.state(l, p);
+  int begin = static_cast<int>(terms_.size());
   if (s == NodeState::Active) {
-    row.push_back({l, p, 1.0});
+    terms_.push_back({l, p, 1.0});
   } else if (!(*free[l])[p]) {  // a Dirichlet ghost or inactive point stays at rest
-    row.push_back({-1, p, 1.0});
+    terms_.push_back({-1, p, 1.0});
   } else {
     const bool finer = s == NodeState::GhostSub;
     const Embedding& e = finer ? h.links(l).child_tet : h.links(l).parent_tet;
@@ -61,10 +61,11 @@ MergedRows::Span MergedRows::row(const Hierarchy& h,
         rows[count] = this->row(h, free, source, t[k]);
         weights[count++] = e.bary[p][k];
       }
-    combine(rows, weights, count, row);
+    combine(rows, weights, count, scratch_);  // reads the sources' rows in terms_
+    begin = static_cast<int>(terms_.size());
+    terms_.insert(terms_.end(), scratch_.begin(), scratch_.end());
   }
-  const Span span{static_cast<int>(terms_.size()), static_cast<int>(terms_.size() + row.size())};
-  terms_.insert(terms_.end(), row.begin(), row.end());
+  const Span span{begin, static_cast<int>(terms_.size())};
   at_[l][p] = static_cast<int>(spans_.size());
   spans_.push_back(span);
   points_.emplace_back(l, p);

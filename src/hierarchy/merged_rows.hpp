@@ -35,6 +35,9 @@ class MergedRows {
   std::vector<Span> spans_;
   std::vector<ActiveTerm> terms_;
   std::vector<std::pair<int, int>> points_;  // the points in at_, for clear()
+  // A row being merged: a point's sources are complete before its own merge starts, so one
+  // scratch serves every depth of the recursion.
+  std::vector<ActiveTerm> scratch_;
 };
 
 }  // namespace mrsim

@@ -138,5 +138,13 @@ void all_blocks(const GreenKernelData& m, const int* tets, int count, const doub
   for (; k < count; ++k) block<1, Damped>(m, tets + k, u, v, out);
 }
 
+// The whole pass, damped (φ or ψ non-zero, MaterialLaw::damped()) or not: what each build exports.
+void every_block(const GreenKernelData& m, const int* tets, int count, const double (*u)[3],
+                 const double (*v)[3], double (*out)[4][3]) {
+  if (m.phi != 0 || m.psi != 0)
+    all_blocks<true>(m, tets, count, u, v, out);
+  else
+    all_blocks<false>(m, tets, count, u, v, out);
+}
 
 }  // namespace

@@ -9,10 +9,7 @@ namespace mrsim {
 
 void green_nodal_forces_avx2(const GreenKernelData& d, const int* tets, int count,
                              const double (*u)[3], const double (*v)[3], double (*out)[4][3]) {
-  if (d.phi != 0 || d.psi != 0)
-    all_blocks<true>(d, tets, count, u, v, out);
-  else
-    all_blocks<false>(d, tets, count, u, v, out);
+  every_block(d, tets, count, u, v, out);
 }
 
 }  // namespace mrsim
