@@ -43,6 +43,16 @@ void set_int64_attribute(hid_t object, const char* name, std::int64_t value, Whe
   check(attribute.close(), where, std::string("close attribute ") + name);
 }
 
+void set_double_array_attribute(hid_t object, const char* name, std::span<const double> values,
+                                Where where) {
+  const hsize_t n = values.size();
+  Handle space = checked(H5Screate_simple(1, &n, nullptr), H5Sclose, where, "create dataspace");
+  Handle attribute = new_attribute(object, name, H5T_IEEE_F64LE, space.get(), where);
+  check(H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, values.data()), where,
+        std::string("write attribute ") + name);
+  check(attribute.close(), where, std::string("close attribute ") + name);
+}
+
 void set_string_list_attribute(hid_t object, const char* name,
                                std::span<const char* const> values, Where where) {
   Handle type = utf8_string_type(where);

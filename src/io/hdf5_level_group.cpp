@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "io/hdf5_attributes.hpp"
 #include "io/hdf5_group.hpp"
 #include "io/hdf5_static_dataset.hpp"
 
@@ -57,6 +58,10 @@ LevelGroup::LevelGroup(hid_t levels_group, int level, const TetMesh& mesh, const
   status_ = ExtendibleDataset(group_.get(), path_, status_spec(points_), file_,
                               created ? ExtendibleDataset::Mode::Create
                                       : ExtendibleDataset::Mode::Reopen);
+}
+
+void LevelGroup::set_attribute(const std::string& name, std::span<const double> values) {
+  set_double_array_attribute(group_.get(), name.c_str(), values, {file_, path_});
 }
 
 void LevelGroup::close() {

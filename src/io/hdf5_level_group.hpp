@@ -19,6 +19,8 @@ class LevelGroup {
   LevelGroup(hid_t levels_group, int level, const TetMesh& mesh, const std::string& file);
 
   std::size_t points() const { return points_; }
+  /// A 1-D float64 attribute of the group (the level's calibration, docs/output.md).
+  void set_attribute(const std::string& name, std::span<const double> values);
   void append_status(std::span<const std::int8_t> status) { status_.append(status); }
   void truncate(hsize_t frames) { status_.truncate(frames); }
   hsize_t rows() const { return status_.rows(); }

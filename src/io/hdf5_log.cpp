@@ -87,6 +87,9 @@ struct Hdf5Log::Impl {
     for (std::size_t k = 0; k < header.levels.size(); ++k) {
       if (header.levels[k] == nullptr) throw std::invalid_argument("Hdf5Log: level without mesh");
       levels.emplace_back(levels_group.get(), static_cast<int>(k), *header.levels[k], file);
+      if (!keep && k < header.level_attributes.size())
+        for (const NamedValues& a : header.level_attributes[k])
+          levels.back().set_attribute(a.name, a.values);
       points_per_level.push_back(levels.back().points());
     }
     if (header.time_level_steps.empty())

@@ -17,6 +17,11 @@ struct ToolLogInfo {
   std::string shape;  // sphere, capsule, flat_cylinder, ...
 };
 
+struct NamedValues {
+  std::string name;
+  std::vector<double> values;
+};
+
 struct Hdf5LogHeader {
   std::string version;        // mrsim version
   std::string git_revision;
@@ -30,6 +35,9 @@ struct Hdf5LogHeader {
   // under /tool_k, and every FrameRecord then carries one tool_force per tool. Empty: no tool
   // objects at all. (Defaulted so that brace-initialised headers need not list it.)
   std::vector<ToolLogInfo> tools = {};
+  // Per level, float64 array attributes of /levels/level_k (a calibrated level's scales and fit
+  // ratios); written when the log is created.
+  std::vector<std::vector<NamedValues>> level_attributes = {};
 };
 
 /// How many rows of each table of an existing log belong to the frames a resumed run keeps.

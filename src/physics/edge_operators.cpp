@@ -33,6 +33,38 @@ std::vector<Mat3> combine_edge_operators(const EdgeOperators& ops, double coeffi
   return k;
 }
 
+Mat3 orthotropic_block(const Vec3& ga, const Vec3& gb, double volume, double lambda,
+                       const double (&mu)[3][3]) {
+  Mat3 k;
+  for (int p = 0; p < 3; ++p)
+    for (int r = 0; r < 3; ++r) {
+      double x = lambda * ga[p] * gb[r] + mu[p][r] * gb[p] * ga[r];
+      if (p == r)
+        for (int q = 0; q < 3; ++q) x += mu[p][q] * ga[q] * gb[q];
+      k(p, r) = volume * x;
+    }
+  return k;
+}
+
+std::vector<Mat3> orthotropic_edge_matrices(const TetGeometry& geo, const PointAdjacency& adj,
+                                            double lambda, double mu,
+                                            const StiffnessScales& scales) {
+  const double lam = lambda * scales.lambda;
+  double m[3][3];
+  for (int p = 0; p < 3; ++p)
+    for (int q = 0; q < 3; ++q) m[p][q] = mu * scales.mu[3 * p + q];
+  std::vector<Mat3> k(adj.nbr.size(), Mat3::Zero());
+  for (int i = 0; i < adj.num_points(); ++i)
+    for (int s = adj.inc_start[i]; s < adj.inc_start[i + 1]; ++s) {
+      const int t = adj.inc_tet[s], a = adj.inc_local[s];
+      for (int b = 0; b < 4; ++b)
+        if (b != a)
+          k[find_neighbour_entry(adj, i, geo.tets[t][b])] +=
+              orthotropic_block(geo.grad[t][a], geo.grad[t][b], geo.volume[t], lam, m);
+    }
+  return k;
+}
+
 Mat3 diagonal_block(const std::vector<Mat3>& k_edges, const PointAdjacency& adj, int i) {
   Mat3 d = Mat3::Zero();
   for (int e = adj.nbr_start[i]; e < adj.nbr_start[i + 1]; ++e) d -= k_edges[e];

@@ -21,6 +21,19 @@ EdgeOperators build_edge_operators(const TetGeometry& geo, const PointAdjacency&
 std::vector<Mat3> combine_edge_operators(const EdgeOperators& ops, double coefficient_a,
                                          double coefficient_b);
 
+/// Block (a, b) of V Bᵀ C B for the tensor S_pq = λ tr(ε) δ_pq + 2 μ_pq ε_pq:
+///   [p][r] = V (λ g_ap g_br + δ_pr Σ_q μ_pq g_aq g_bq + μ_pr g_bp g_ar),
+/// which is λA + μB's block when every μ_pq = μ.
+Mat3 orthotropic_block(const Vec3& ga, const Vec3& gb, double volume, double lambda,
+                       const double (&mu)[3][3]);
+
+/// K_ij (or D_ij) of a calibrated level's orthotropic tensor (MaterialLaw::scales): λ and μ
+/// scaled as hooke() does. Equal to combine_edge_operators(ops, λ, μ) to rounding when the
+/// scales are all one (the isotropic law keeps that path).
+std::vector<Mat3> orthotropic_edge_matrices(const TetGeometry& geo, const PointAdjacency& adj,
+                                            double lambda, double mu,
+                                            const StiffnessScales& scales);
+
 /// Diagonal block K_ii = -Σ_j K_ij (translations produce no force).
 Mat3 diagonal_block(const std::vector<Mat3>& k_edges, const PointAdjacency& adj, int i);
 

@@ -58,8 +58,9 @@ void gradients(const GreenKernelData& m, const int* tets, const double (*x)[3],
 template <int B, bool Damped>
 void block(const GreenKernelData& m, const int* tets, const double (*u)[3], const double (*v)[3],
            double (*out)[4][3]) {
-  const double lambda = m.lambda, two_mu = 2.0 * m.mu;
-  const double phi = m.phi, two_psi = 2.0 * m.psi;
+  const double lambda = m.lambda, phi = m.phi;
+  const double* two_mu = m.two_mu;  // per strain component (a calibrated level's scales)
+  const double* two_psi = m.two_psi;
   double g[4][3][B], G[9][B], Gd[9][B], F[9][B], S[9][B], P[9][B];
   shape_gradients<B>(m, tets, g);
   gradients<B>(m, tets, u, g, G);
@@ -76,7 +77,7 @@ void block(const GreenKernelData& m, const int* tets, const double (*u)[3], cons
       }
   for (int b = 0; b < B; ++b) {
     const double tr = right(S[0][b], S[4][b], S[8][b]);  // still E here
-    for (int k = 0; k < 9; ++k) S[k][b] = two_mu * S[k][b];
+    for (int k = 0; k < 9; ++k) S[k][b] = two_mu[k] * S[k][b];
     for (int k : kDiagonal) S[k][b] += lambda * tr;
   }
   for (int k = 0; k < 9; ++k)
@@ -99,7 +100,7 @@ void block(const GreenKernelData& m, const int* tets, const double (*u)[3], cons
           Ed[MRSIM_IX(i, j)] = 0.5 * (D[MRSIM_IX(i, j)][b] + D[MRSIM_IX(j, i)][b]);
       const double tr = right(Ed[0], Ed[4], Ed[8]);
       double V[9];
-      for (int k = 0; k < 9; ++k) V[k] = two_psi * Ed[k];
+      for (int k = 0; k < 9; ++k) V[k] = two_psi[k] * Ed[k];
       for (int k : kDiagonal) V[k] += phi * tr;
       for (int k = 0; k < 9; ++k) S[k][b] += V[k];
     }
@@ -141,7 +142,7 @@ void all_blocks(const GreenKernelData& m, const int* tets, int count, const doub
 // The whole pass, damped (φ or ψ non-zero, MaterialLaw::damped()) or not: what each build exports.
 void every_block(const GreenKernelData& m, const int* tets, int count, const double (*u)[3],
                  const double (*v)[3], double (*out)[4][3]) {
-  if (m.phi != 0 || m.psi != 0)
+  if (m.phi != 0 || m.two_psi[0] != 0)  // scales are positive: ψ ≠ 0 ⇔ two_psi ≠ 0
     all_blocks<true>(m, tets, count, u, v, out);
   else
     all_blocks<false>(m, tets, count, u, v, out);

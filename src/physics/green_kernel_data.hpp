@@ -9,7 +9,10 @@ struct GreenKernelData {
   const double (*grad)[4][3];  // ∇N_a of each tet
   const int (*tets)[4];        // vertices of each tet
   const double* volume;        // rest volume of each tet
-  double lambda, mu, phi, psi;
+  // λ, φ (times the level's λ scale) and 2μ, 2ψ per strain component (times the level's μ scales,
+  // MaterialLaw::scales; all equal on an isotropic level).
+  double lambda, phi;
+  double two_mu[9], two_psi[9];
 };
 
 /// out[tets[k]][a] = -V P ∇N_a for k in [0, count): the baseline build of the kernel.

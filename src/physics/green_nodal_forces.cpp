@@ -7,13 +7,20 @@ namespace mrsim {
 #include "physics/green_block_kernel.inl"
 
 GreenKernelData green_kernel_data(const LevelModel& m) {
-  return {reinterpret_cast<const double(*)[4][3]>(m.geo.grad.data()),
-          reinterpret_cast<const int(*)[4]>(m.geo.tets.data()),
-          m.geo.volume.data(),
-          m.law.lambda,
-          m.law.mu,
-          m.law.phi,
-          m.law.psi};
+  const MaterialLaw& law = m.law;
+  GreenKernelData d{reinterpret_cast<const double(*)[4][3]>(m.geo.grad.data()),
+                    reinterpret_cast<const int(*)[4]>(m.geo.tets.data()),
+                    m.geo.volume.data(),
+                    law.lambda * law.scales.lambda,
+                    law.phi * law.scales.lambda,
+                    {},
+                    {}};
+  // 2 (μ s) is 2μ exactly when s = 1: an isotropic level keeps its bits.
+  for (int k = 0; k < 9; ++k) {
+    d.two_mu[k] = 2.0 * (law.mu * law.scales.mu[k]);
+    d.two_psi[k] = 2.0 * (law.psi * law.scales.mu[k]);
+  }
+  return d;
 }
 
 namespace {

@@ -97,8 +97,13 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law, bool s
   m.mass = lumped_masses(m.geo, m.adj, law.density);
   m.lumped_volume = lumped_masses(m.geo, m.adj, 1.0);
   const EdgeOperators ops = build_edge_operators(m.geo, m.adj);
-  m.K = combine_edge_operators(ops, law.lambda, law.mu);
-  if (law.damped()) m.D = combine_edge_operators(ops, law.phi, law.psi);
+  if (law.scales.isotropic()) {
+    m.K = combine_edge_operators(ops, law.lambda, law.mu);
+    if (law.damped()) m.D = combine_edge_operators(ops, law.phi, law.psi);
+  } else {  // a calibrated level (hierarchy/level_calibration.hpp)
+    m.K = orthotropic_edge_matrices(m.geo, m.adj, law.lambda, law.mu, law.scales);
+    if (law.damped()) m.D = orthotropic_edge_matrices(m.geo, m.adj, law.phi, law.psi, law.scales);
+  }
   // B_ij = (∇N_j∇N_iᵀ + (∇N_i·∇N_j) I) V summed, so trace(B_ij) = 4 Σ V ∇N_i·∇N_j.
   m.laplacian_w.resize(ops.B.size());
   for (size_t e = 0; e < ops.B.size(); ++e) m.laplacian_w[e] = -ops.B[e].trace() / 4.0;

@@ -25,8 +25,10 @@ TetEnergyBounds tet_energy_bounds(const TetGeometry& geo, const MaterialLaw& law
   out.stiffness.resize(n);
   out.damping.assign(n, 0.0);
   for (std::size_t t = 0; t < n; ++t) {
-    out.stiffness[t] = energy_bound(geo.grad[t], geo.volume[t], law.lambda, law.mu);
-    if (law.damped()) out.damping[t] = energy_bound(geo.grad[t], geo.volume[t], law.phi, law.psi);
+    // A calibrated level's tensor is bounded by its largest scales (MaterialLaw::bound_*).
+    out.stiffness[t] = energy_bound(geo.grad[t], geo.volume[t], law.bound_lambda(), law.bound_mu());
+    if (law.damped())
+      out.damping[t] = energy_bound(geo.grad[t], geo.volume[t], law.bound_phi(), law.bound_psi());
   }
   return out;
 }

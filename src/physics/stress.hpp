@@ -11,10 +11,18 @@ inline Mat3 green_strain(const Mat3& G) { return 0.5 * (G + G.transpose() + G.tr
 /// Cauchy (linear) strain ε = ½(G + Gᵀ).
 inline Mat3 cauchy_strain(const Mat3& G) { return 0.5 * (G + G.transpose()); }
 
-/// Isotropic Hooke law a·tr(E) I + 2b·E (λ, μ for stress; φ, ψ for eq. 2.22 damping).
-inline Mat3 hooke(const Mat3& E, double a, double b) {
-  Mat3 S = (2.0 * b) * E;
-  S.diagonal().array() += a * E.trace();
+/// Hooke law a·tr(E) I + 2b·E (λ, μ for stress; φ, ψ for eq. 2.22 damping), with a calibrated
+/// level's orthotropic scales (MaterialLaw::scales): a·lambda, and b·mu[3i+j] on E_ij. The
+/// isotropic law takes the plain expression (the same bits as before calibration existed).
+inline Mat3 hooke(const Mat3& E, double a, double b, const StiffnessScales& s) {
+  Mat3 S;
+  if (s.isotropic()) {
+    S = (2.0 * b) * E;
+  } else {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) S(i, j) = (2.0 * (b * s.mu[3 * i + j])) * E(i, j);
+  }
+  S.diagonal().array() += (a * s.lambda) * E.trace();
   return S;
 }
 
@@ -22,25 +30,30 @@ inline Mat3 hooke(const Mat3& E, double a, double b) {
 /// damping 𝒱 = φ tr(Ė) I + 2ψ Ė, Ė = ½(FᵀĠ + ĠᵀF). The nodal force is f_a = -V P ∇N_a.
 inline Mat3 green_piola(const Mat3& G, const Mat3* Gdot, const MaterialLaw& law) {
   const Mat3 F = Mat3::Identity() + G;
-  Mat3 S = hooke(green_strain(G), law.lambda, law.mu);
+  Mat3 S = hooke(green_strain(G), law.lambda, law.mu, law.scales);
   if (Gdot) {
     const Mat3 FtGd = F.transpose() * (*Gdot);
-    S += hooke(0.5 * (FtGd + FtGd.transpose()), law.phi, law.psi);
+    S += hooke(0.5 * (FtGd + FtGd.transpose()), law.phi, law.psi, law.scales);
   }
   return F * S;
 }
 
 /// Linear stress σ + ν (Cauchy): f_a = -V σ ∇N_a.
 inline Mat3 cauchy_stress(const Mat3& G, const Mat3* Gdot, const MaterialLaw& law) {
-  Mat3 s = hooke(cauchy_strain(G), law.lambda, law.mu);
-  if (Gdot) s += hooke(cauchy_strain(*Gdot), law.phi, law.psi);
+  Mat3 s = hooke(cauchy_strain(G), law.lambda, law.mu, law.scales);
+  if (Gdot) s += hooke(cauchy_strain(*Gdot), law.phi, law.psi, law.scales);
   return s;
 }
 
-/// Strain energy density (λ/2) tr(E)² + μ E:E of either strain.
+/// Strain energy density (λ/2) tr(E)² + μ E:E of either strain (scaled per component on a
+/// calibrated level: ½ S:E with hooke()'s S).
 inline double energy_density(const Mat3& E, const MaterialLaw& law) {
   const double tr = E.trace();
-  return 0.5 * law.lambda * tr * tr + law.mu * E.squaredNorm();
+  const StiffnessScales& s = law.scales;
+  if (s.isotropic()) return 0.5 * law.lambda * tr * tr + law.mu * E.squaredNorm();
+  double shear = 0;
+  for (int k = 0; k < 9; ++k) shear += s.mu[k] * E.data()[k] * E.data()[k];
+  return 0.5 * (law.lambda * s.lambda) * tr * tr + law.mu * shear;
 }
 
 }  // namespace mrsim

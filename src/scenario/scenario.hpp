@@ -121,6 +121,7 @@ struct Scenario {
   std::filesystem::path source;  // the YAML file it came from
   std::vector<LevelSpec> levels;
   LengthUnit units = LengthUnit::Metre;
+  bool calibrate = false;  // object.calibration: orthotropic (hierarchy/level_calibration.hpp)
   std::filesystem::path skin;  // absolute; empty: the finest level's boundary
   LengthUnit skin_units = LengthUnit::Metre;  // of the skin file (default: object.units)
   MaterialSpec material;

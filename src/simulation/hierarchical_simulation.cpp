@@ -20,9 +20,11 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   // One level: no ghost, nothing to send.
   transfer_ = (coupling_ == Coupling::Energy || coupling_ == Coupling::EnergyConsistent) && L > 1;
   std::vector<HierarchyLevel> levels;
+  calibration_ = setup.calibration;
   for (int l = 0; l < L; ++l) {
+    const MaterialLaw& law = setup.level_laws.empty() ? setup.law : setup.level_laws[l];
     models_.push_back(std::make_unique<LevelModel>(
-        build_level_model(*meshes[l], setup.law, is_semi_implicit(setup.integrator))));
+        build_level_model(*meshes[l], law, is_semi_implicit(setup.integrator))));
     levels.push_back({meshes[l], &models_[l]->adj});
   }
   hierarchy_ = std::make_unique<Hierarchy>(levels, build_level_links(levels));

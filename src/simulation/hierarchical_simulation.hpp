@@ -14,6 +14,7 @@
 #include "hierarchy/coupling_kind.hpp"
 #include "hierarchy/ghost_update.hpp"
 #include "hierarchy/interface_inertia.hpp"
+#include "hierarchy/level_calibration.hpp"
 #include "hierarchy/patch_test_weights.hpp"
 #include "hierarchy/status_lists.hpp"
 #include "io/checkpoint_data.hpp"
@@ -27,6 +28,10 @@ namespace mrsim {
 
 struct HierarchySetup {
   MaterialLaw law;
+  // Per level, when object.calibration gives the coarser levels their own tensors
+  // (hierarchy/level_calibration.hpp); empty: `law` on every level.
+  std::vector<MaterialLaw> level_laws;
+  std::vector<LevelCalibration> calibration;  // the fit's report, per level (or empty)
   Vec3 gravity = Vec3::Zero();
   Integrator integrator = Integrator::ModifiedEuler;
   Coupling coupling = Coupling::Energy;
@@ -58,6 +63,8 @@ class HierarchicalSimulation {
   const PointState& state(int l) const { return states_[l]; }
   PointState& state(int l) { return states_[l]; }
   const Hierarchy& hierarchy() const { return *hierarchy_; }
+  /// The calibration fit of each level (empty without object.calibration).
+  const std::vector<LevelCalibration>& calibration() const { return calibration_; }
   const StatusLists& lists() const { return *lists_; }
   std::int64_t force_evaluations(int l) const {
     return stepper_->force_evaluations(time_levels_ ? 2 * l : l);
@@ -181,6 +188,7 @@ class HierarchicalSimulation {
   void drift_all(int from, int to, double frame_start, double tick);
 
   std::vector<std::unique_ptr<LevelModel>> models_;
+  std::vector<LevelCalibration> calibration_;
   std::vector<PointState> states_;
   std::unique_ptr<Hierarchy> hierarchy_;
   std::unique_ptr<StatusLists> lists_;

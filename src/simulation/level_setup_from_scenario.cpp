@@ -21,10 +21,27 @@ MaterialLaw material_law(const MaterialSpec& spec) {
   return law;
 }
 
-HierarchySetup hierarchy_setup(const Scenario& sc, const std::vector<const TetMesh*>& meshes) {
+LevelLaws level_laws(const Scenario& sc, const std::vector<const TetMesh*>& meshes) {
+  LevelLaws out;
+  const MaterialLaw law = material_law(sc.material);
+  out.laws.assign(meshes.size(), law);
+  if (!sc.calibrate || meshes.size() < 2) return out;
+  out.calibration = calibrate_levels(meshes, law, select_fixed_points(meshes, sc.fixed));
+  for (size_t l = 0; l < meshes.size(); ++l) out.laws[l].scales = out.calibration[l].scales;
+  return out;
+}
+
+HierarchySetup hierarchy_setup(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
+                               const LevelLaws* laws) {
   check_level_consistency(sc, meshes);
   HierarchySetup s;
   s.law = material_law(sc.material);
+  const LevelLaws computed = laws ? LevelLaws{} : level_laws(sc, meshes);
+  if (!laws) laws = &computed;
+  if (!laws->calibration.empty()) {
+    s.level_laws = laws->laws;
+    s.calibration = laws->calibration;
+  }
   s.gravity = sc.gravity;
   s.integrator = sc.time.integrator;
   s.coupling = sc.space.coupling;

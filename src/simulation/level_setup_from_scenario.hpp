@@ -8,8 +8,18 @@ namespace mrsim {
 
 MaterialLaw material_law(const MaterialSpec& spec);
 
+/// Each level's material: the scenario's, with each coarser level's calibrated tensor when
+/// object.calibration asks for it (hierarchy/level_calibration.hpp; computed here, at set-up).
+struct LevelLaws {
+  std::vector<MaterialLaw> laws;              // one per level
+  std::vector<LevelCalibration> calibration;  // one per level, or empty
+};
+LevelLaws level_laws(const Scenario& scenario, const std::vector<const TetMesh*>& meshes);
+
 /// Step dt = frame_dt / substeps; fixed points selected on every level (may throw InputError).
-HierarchySetup hierarchy_setup(const Scenario& scenario, const std::vector<const TetMesh*>& meshes);
+/// `laws`: from level_laws() (computed when not given).
+HierarchySetup hierarchy_setup(const Scenario& scenario, const std::vector<const TetMesh*>& meshes,
+                               const LevelLaws* laws = nullptr);
 
 SpaceAdaptivitySettings space_settings(const Scenario& scenario);
 

@@ -67,6 +67,27 @@ std::vector<double> time_level_steps(const Scenario& sc) {
   return steps;
 }
 
+// /levels/level_k attributes of a calibrated hierarchy (docs/output.md): the seven factors and
+// the level alone against the finest level before and after the fit.
+std::vector<std::vector<NamedValues>> calibration_attributes(
+    const std::vector<LevelCalibration>& calibration) {
+  std::vector<std::vector<NamedValues>> out;
+  for (const LevelCalibration& c : calibration) {
+    const std::array<double, 7> scales = c.scales.components();
+    std::vector<NamedValues> all = {{"calibration_scales", {scales.begin(), scales.end()}},
+                                    {"calibration_sag_ratio_before", c.sag_before},
+                                    {"calibration_sag_ratio_after", c.sag_after},
+                                    {"calibration_peak_ratio_before", c.peak_before},
+                                    {"calibration_peak_ratio_after", c.peak_after},
+                                    {"calibration_frequency_ratio_before", c.frequency_before},
+                                    {"calibration_frequency_ratio_after", c.frequency_after}};
+    // The finest level (and a free body's sags) have no ratios: only what exists is written.
+    std::erase_if(all, [](const NamedValues& a) { return a.values.empty(); });
+    out.push_back(std::move(all));
+  }
+  return out;
+}
+
 std::vector<const TetMesh*> pointers(const std::vector<TetMesh>& meshes) {
   std::vector<const TetMesh*> p;
   for (const TetMesh& m : meshes) p.push_back(&m);
@@ -124,6 +145,7 @@ class FrameWriter {
     if (!resume) write_text(sc.output.dir / "scenario.yaml", scenario_text_);
     Hdf5LogHeader header{kVersion, kGitRevision, scenario_text_, utc_now_iso8601(), meshes,
                          time_level_steps(sc)};
+    header.level_attributes = calibration_attributes(sim.calibration());
     if (const SkinContact* c = sim.contact())
       for (int k = 0; k < c->num_tools(); ++k) {
         header.tools.push_back({c->tool(k).name, shape_name(c->tool(k).shape.kind)});
@@ -459,8 +481,9 @@ void write_summary(const Scenario& sc, const HierarchicalSimulation& sim, const 
 Scenario check_scenario_inputs(const Scenario& sc) {
   const std::vector<TetMesh> meshes = load_meshes(sc);
   // Fixed regions and loads select something; tool trajectories and the skin read.
-  hierarchy_setup(sc, pointers(meshes));
-  return with_stable_substeps(sc, pointers(meshes));
+  const LevelLaws laws = level_laws(sc, pointers(meshes));
+  hierarchy_setup(sc, pointers(meshes), &laws);
+  return with_stable_substeps(sc, pointers(meshes), &laws.laws);
 }
 
 namespace {
@@ -471,8 +494,9 @@ RunSummary execute(const Scenario& input, const RunOptions& options, const Check
   const auto t0 = Clock::now() - std::chrono::duration_cast<Clock::duration>(
                                      std::chrono::duration<double>(wall_before));
   const std::vector<TetMesh> meshes = load_meshes(input);
-  const Scenario sc = with_stable_substeps(input, pointers(meshes));
-  const HierarchySetup setup = hierarchy_setup(sc, pointers(meshes));
+  const LevelLaws laws = level_laws(input, pointers(meshes));
+  const Scenario sc = with_stable_substeps(input, pointers(meshes), &laws.laws);
+  const HierarchySetup setup = hierarchy_setup(sc, pointers(meshes), &laws);
   HierarchicalSimulation sim(pointers(meshes), setup);
   SpaceAdaptivity adapt(space_settings(sc), sim);
   const DivergenceGuard guard =

@@ -97,8 +97,12 @@ double shortest_edge(const TetMesh& mesh) {
   return std::sqrt(h2);
 }
 
-StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes) {
+StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
+                       const std::vector<MaterialLaw>* laws) {
   const MaterialLaw law = material_law(sc.material);
+  const std::vector<MaterialLaw> computed = laws ? std::vector<MaterialLaw>{}
+                                                 : level_laws(sc, meshes).laws;
+  if (!laws) laws = &computed;
   const bool semi = is_semi_implicit(sc.time.integrator);
   int last = 0;
   if (sc.space.enabled)
@@ -107,7 +111,7 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
   std::vector<LevelModel> models;
   std::vector<std::vector<PointInertia>> star;
   for (int l = 0; l <= last; ++l) {
-    models.push_back(build_level_model(*meshes[l], law, semi));
+    models.push_back(build_level_model(*meshes[l], (*laws)[l], semi));
     star.push_back(models.back().star);
   }
   auto own = [&](int l, int p) {  // without contact
@@ -132,8 +136,9 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
   return best;
 }
 
-Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes) {
-  const StableStep stable = stable_step(sc, meshes);
+Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
+                              const std::vector<MaterialLaw>* laws) {
+  const StableStep stable = stable_step(sc, meshes, laws);
   const double allowed = sc.time.courant * stable.dt;
   const bool time_levels = sc.time_levels.enabled;
   std::ostringstream where;

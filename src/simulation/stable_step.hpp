@@ -29,13 +29,16 @@ struct StableStep {
 };
 
 /// The stable step estimate (before time.courant) of the scenario's levels 0..max_level (0
-/// only when space adaptivity is off).
-StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes);
+/// only when space adaptivity is off). `laws`: each level's material (level_laws(), computed
+/// when not given).
+StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
+                       const std::vector<MaterialLaw>* laws = nullptr);
 
 /// The scenario with time.substeps filled in when it was omitted (also in `resolved`, so the
 /// written scenario.yaml reruns identically), with an info line saying so; when it was given
 /// and the step exceeds C × the estimate, a warning naming the level and the substeps needed.
 /// Throws InputError when the step needed is beyond kMaxSubsteps per frame.
-Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes);
+Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
+                              const std::vector<MaterialLaw>* laws = nullptr);
 
 }  // namespace mrsim

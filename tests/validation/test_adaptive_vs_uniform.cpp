@@ -279,3 +279,34 @@ TEST(AdaptiveVsUniform, PredictionRemovesTheStartUpLag) {
   cp.note = note;
   validation::record(cp);
 }
+
+// Issue 16 point 1: with calibrated coarse levels (object.calibration: orthotropic) the levels
+// that stay coarse bend like the finest one instead of at a sixth of its deflection, so the
+// first frame's lag is small and the adaptive tip follows L2 alone: largest difference 0.34 of
+// the peak (0.68 uncalibrated), static within 1 %. Its f1 is 11 % above L2's: the calibrated
+// coarse levels match L2's f1 alone (hierarchy tests) but the mixed-level beam, which now
+// refines all of L2 at the first swing and coarsens back, vibrates stiffer — the open part
+// (docs/hierarchy.md "Calibrated levels"). Breaking it: without the fit the deviation is 0.68.
+TEST(AdaptiveVsUniform, CalibratedLevelsBringTheBeamOntoItsFinestLevel) {
+  const Scenario sc = beam_adaptive({"object.calibration=orthotropic"});
+  const Curves c = run_both(sc);
+  const Agreement g = agreement(c);
+  char note[300];
+  std::snprintf(note, sizeof note,
+                "calibrated: static %+.2f %%, f1 %+.2f %%, largest difference %.3f of the peak "
+                "%.4e m, finest points active at most %zu of %zu, %d splits, %d merges",
+                100 * g.dstatic, 100 * g.df, g.worst / g.peak, g.peak, c.max_fine_active,
+                c.fine_points, c.splits, c.merges);
+  std::printf("%s\n", note);
+  EXPECT_NEAR(g.dstatic, 0, 0.05);
+  EXPECT_LE(g.worst / g.peak, 0.45);
+  EXPECT_NEAR(g.df, 0, 0.15);
+  validation::Check cd = check("adaptive_vs_uniform_calibrated_max_deviation",
+                               "Beam, adaptive 3 calibrated levels (object.calibration: "
+                               "orthotropic) vs L2 alone: largest tip difference over 1 s",
+                               "max |w_adaptive - w_L2| / peak w_L2", g.worst / g.peak, 0, 0.45);
+  cd.reference_source = "no analytic reference: both runs start from rest under sudden gravity";
+  cd.tolerance = "issue 16 asks <= 0.2; 0.45 guards the gain over 0.68 uncalibrated (not met)";
+  cd.note = note;
+  validation::record(cd);
+}

@@ -1,0 +1,44 @@
+#pragma once
+// Calibrated coarse levels (numerical coarsening; docs/hierarchy.md "Calibrated levels").
+// Linear tets a few elements across are stiffer than the object they mesh, so each coarse level
+// alone answers unlike the finest one, and an adaptive run is only as good as the region that
+// refines (issue 16). Each coarser level gets an orthotropic tensor (MaterialLaw::scales: seven
+// positive factors on λ and on the μ of the strain components xx, yy, zz, yz, xz, xy; the
+// damping takes the same factors) fitted so that the level alone reproduces the finest level's
+//   - static sag under gravity along x, y and z (the mass-weighted mean displacement f·u / Σm,
+//     f = M g), when it is held, and
+//   - six lowest eigenfrequencies (after the six rigid modes of a free body),
+// in the log of each ratio, by Levenberg–Marquardt on the seven log-factors with analytic
+// derivatives (∂ log(f·u)/∂p_j = −s_j uᵀK_j u / f·u, ∂ log ω_k/∂p_j = s_j φ_kᵀK_jφ_k / 2ω_k²)
+// and a small pull towards the isotropic law. Linear (Cauchy) stiffness at rest: the fitted
+// tensor then serves either strain measure (Green–Lagrange with any constant tensor stays free
+// of force in a rigid motion). Kharevych et al. 2009 fit a tensor per element from harmonic
+// displacements; that corrects inhomogeneity, not the locking of a homogeneous coarse mesh,
+// which is what the bundled levels need — hence a fit to the finest level's responses.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "mesh/tet_mesh.hpp"
+#include "physics/material_law.hpp"
+
+namespace mrsim {
+
+struct LevelCalibration {
+  StiffnessScales scales;  // all ones on the finest level
+  // The level alone against the finest level, before and after the fit (ratios): mean and
+  // largest displacement under gravity along x, y, z (empty for a free body; the largest is
+  // reported, not fitted) and the six lowest frequencies.
+  std::vector<double> sag_before, sag_after, peak_before, peak_after;
+  std::vector<double> frequency_before, frequency_after;
+  int iterations = 0;
+};
+
+/// One entry per level, the last (finest) one uncalibrated. `fixed`: per level, one flag per
+/// point (as HierarchySetup::fixed). Every level must be held at three points or more, or none
+/// at all (a free body: frequencies only); anything else is an InputError.
+std::vector<LevelCalibration> calibrate_levels(const std::vector<const TetMesh*>& meshes,
+                                               const MaterialLaw& law,
+                                               const std::vector<std::vector<std::uint8_t>>& fixed);
+
+}  // namespace mrsim

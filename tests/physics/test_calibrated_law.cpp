@@ -1,0 +1,164 @@
+// A calibrated level's orthotropic tensor (MaterialLaw::scales) through every path that reads
+// the material: the Green–Lagrange kernel builds, the Cauchy edge matrices, the per-point
+// force, the split stiffness of the calibration fit and its lowest-mode solver.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "dense_spectrum.hpp"
+#include "physics/component_stiffness.hpp"
+#include "physics/green_nodal_forces.hpp"
+#include "physics/internal_force.hpp"
+#include "physics/lowest_modes.hpp"
+#include "physics/stress.hpp"
+
+namespace mrsim {
+namespace {
+
+using test_support::jittered_box;
+using test_support::law_with;
+
+const StiffnessScales kScales =
+    StiffnessScales::from_components({0.7, 1.3, 0.4, 2.1, 0.9, 1.6, 0.5});
+
+std::vector<Vec3> random_field(int n, double amplitude, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(-amplitude, amplitude);
+  std::vector<Vec3> u(n);
+  for (Vec3& x : u) x = Vec3(d(rng), d(rng), d(rng));
+  return u;
+}
+
+TEST(CalibratedLaw, ScalesRoundTripThroughTheirSevenComponents) {
+  const auto c = kScales.components();
+  EXPECT_EQ(StiffnessScales::from_components(c).mu, kScales.mu);
+  EXPECT_EQ(kScales.mu[1], kScales.mu[3]);  // xy = yx
+  EXPECT_EQ(kScales.mu[5], 0.9);            // yz
+  EXPECT_DOUBLE_EQ(kScales.max_mu(), 2.1);
+  EXPECT_TRUE(StiffnessScales{}.isotropic());
+  EXPECT_FALSE(kScales.isotropic());
+}
+
+TEST(CalibratedLaw, GreenKernelBuildsGiveGreenPiolasBits) {
+  const TetMesh mesh = jittered_box(5, 3, 3, 0.2, 3);
+  MaterialLaw law = law_with(5e5, 3e4, 0.7, 20);
+  law.strain = StrainMeasure::GreenLagrange;
+  law.scales = kScales;
+  const LevelModel m = build_level_model(mesh, law);
+  const auto u = random_field(m.num_points(), 3e-3, 1), v = random_field(m.num_points(), 0.1, 2);
+  std::vector<int> all(m.num_tets());
+  for (int t = 0; t < m.num_tets(); ++t) all[t] = t;
+  std::vector<TetGradients> out(m.num_tets());
+  green_nodal_forces(m, all.data(), m.num_tets(), u.data(), v.data(), out.data());
+  std::vector<TetGradients> base(m.num_tets());
+  green_nodal_forces_baseline(green_kernel_data(m), all.data(), m.num_tets(),
+                              reinterpret_cast<const double(*)[3]>(u.data()),
+                              reinterpret_cast<const double(*)[3]>(v.data()),
+                              reinterpret_cast<double(*)[4][3]>(base.data()));
+  for (int t = 0; t < m.num_tets(); ++t) {
+    const Mat3 G = tet_gradient(m.geo.grad[t], m.geo.tets[t], u.data());
+    const Mat3 Gd = tet_gradient(m.geo.grad[t], m.geo.tets[t], v.data());
+    const Mat3 P = -m.geo.volume[t] * green_piola(G, &Gd, law);
+    TetGradients expected;
+    for (int a = 0; a < 4; ++a) expected[a].noalias() = P * m.geo.grad[t][a];
+    ASSERT_EQ(std::memcmp(&expected, &out[t], sizeof(TetGradients)), 0) << "tet " << t;
+    ASSERT_EQ(std::memcmp(&expected, &base[t], sizeof(TetGradients)), 0) << "tet " << t;
+  }
+}
+
+TEST(CalibratedLaw, GreenLagrangeMakesNoForceInARigidRotation) {
+  const TetMesh mesh = jittered_box(5, 3, 3, 0.2, 4);
+  MaterialLaw law = law_with(5e5, 3e4);
+  law.strain = StrainMeasure::GreenLagrange;
+  law.scales = kScales;
+  const LevelModel m = build_level_model(mesh, law);
+  const Mat3 R = Eigen::AngleAxisd(1.1, Vec3(1, 2, -0.5).normalized()).toRotationMatrix();
+  std::vector<Vec3> u(m.num_points()), stretch(m.num_points()), v(m.num_points(), Vec3::Zero());
+  for (int i = 0; i < m.num_points(); ++i) {
+    u[i] = (R - Mat3::Identity()) * mesh.points[i] + Vec3(0.01, -0.02, 0.03);
+    stretch[i] = Vec3(0.01 * mesh.points[i].x(), 0, 0);
+  }
+  ForceWorkspace ws;
+  std::vector<Vec3> f(m.num_points()), g(m.num_points());
+  internal_forces(m, u.data(), v.data(), f.data(), ws);
+  internal_forces(m, stretch.data(), v.data(), g.data(), ws);
+  double fr = 0, gs = 0;
+  for (int i = 0; i < m.num_points(); ++i)
+    fr = std::max(fr, f[i].norm()), gs = std::max(gs, g[i].norm());
+  EXPECT_LT(fr, 1e-10 * gs) << "a 1 % stretch gives " << gs << " N";
+}
+
+TEST(CalibratedLaw, CauchyEdgeMatricesAreTheTensorsForce) {
+  const TetMesh mesh = jittered_box(4, 3, 3, 0.2, 5);
+  MaterialLaw law = law_with(4e5, 2e4, 0.5, 12);
+  law.scales = kScales;
+  const LevelModel m = build_level_model(mesh, law);
+  const auto u = random_field(m.num_points(), 1e-3, 6), v = random_field(m.num_points(), 0.1, 7);
+  ForceWorkspace ws;
+  std::vector<Vec3> f(m.num_points());
+  internal_forces(m, u.data(), v.data(), f.data(), ws);  // edge matrices
+  double scale = 0, err = 0;
+  for (int i = 0; i < m.num_points(); ++i) {
+    const Vec3 direct = point_internal_force(m, i, u.data(), v.data());  // per-tet stress
+    scale = std::max(scale, direct.norm());
+    err = std::max(err, (direct - f[i]).norm());
+  }
+  EXPECT_LT(err, 1e-12 * scale);
+  // With unit scales the orthotropic matrices are the isotropic λA + μB.
+  const EdgeOperators ops = build_edge_operators(m.geo, m.adj);
+  const std::vector<Mat3> iso = combine_edge_operators(ops, law.lambda, law.mu);
+  const std::vector<Mat3> ortho =
+      orthotropic_edge_matrices(m.geo, m.adj, law.lambda, law.mu, StiffnessScales{});
+  for (size_t e = 0; e < iso.size(); ++e)
+    ASSERT_LT((iso[e] - ortho[e]).norm(), 1e-12 * iso[e].norm() + 1e-300) << "entry " << e;
+}
+
+TEST(CalibratedLaw, ComponentStiffnessSumsToTheLevelsLinearForce) {
+  const TetMesh mesh = jittered_box(4, 3, 2, 0.2, 8);
+  MaterialLaw law = law_with(4e5, 2e4);
+  law.scales = kScales;
+  const LevelModel m = build_level_model(mesh, law);
+  std::vector<std::uint8_t> fixed(m.num_points(), 0);
+  const ComponentStiffness cs = component_stiffness(m.geo, m.num_points(), law, fixed);
+  const SparseMatrix K = cs.combined(kScales.components());
+  const auto u = random_field(m.num_points(), 1e-3, 9);
+  std::vector<Vec3> v(m.num_points(), Vec3::Zero()), f(m.num_points());
+  ForceWorkspace ws;
+  internal_forces(m, u.data(), v.data(), f.data(), ws);
+  Eigen::VectorXd x(3 * m.num_points());
+  for (int i = 0; i < m.num_points(); ++i) x.segment<3>(3 * i) = u[i];
+  const Eigen::VectorXd Ku = K * x;
+  for (int i = 0; i < m.num_points(); ++i)
+    ASSERT_LT((Ku.segment<3>(3 * i) + f[i]).norm(), 1e-10 * Ku.norm()) << "point " << i;
+  for (int i = 0; i < m.num_points(); ++i) EXPECT_DOUBLE_EQ(cs.mass[3 * i], m.mass[i]);
+}
+
+TEST(CalibratedLaw, LowestModesAreTheDenseOnes) {
+  const TetMesh mesh = jittered_box(4, 2, 2, 0.2, 10);
+  const MaterialLaw law = law_with(4e5, 2e4);
+  for (const bool held : {true, false}) {
+    std::vector<std::uint8_t> fixed(mesh.points.size(), 0);
+    if (held)
+      for (size_t i = 0; i < mesh.points.size(); ++i) fixed[i] = mesh.points[i].x() < 1e-9;
+    const TetGeometry geo = build_tet_geometry(mesh);
+    const ComponentStiffness cs =
+        component_stiffness(geo, static_cast<int>(mesh.points.size()), law, fixed);
+    const SparseMatrix K = cs.combined({1, 1, 1, 1, 1, 1, 1});
+    const Modes modes = lowest_modes(K, cs.mass, 10);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(
+        Eigen::MatrixXd(K), Eigen::MatrixXd(cs.mass.asDiagonal()));
+    const double top = dense.eigenvalues().maxCoeff();
+    for (int k = 0; k < 10; ++k)
+      EXPECT_NEAR(modes.omega2[k], dense.eigenvalues()[k], 1e-9 * top)
+          << (held ? "held" : "free") << " mode " << k;
+    const Eigen::MatrixXd gram = modes.shapes.transpose() * cs.mass.asDiagonal() * modes.shapes;
+    EXPECT_LT((gram - Eigen::MatrixXd::Identity(10, 10)).norm(), 1e-8);
+  }
+}
+
+}  // namespace
+}  // namespace mrsim
