@@ -69,6 +69,39 @@ def test_no_loads_no_change(binary, source, tmp):
           "compare: %s)" % (differ or r.stdout.strip().splitlines()[-1:]))
 
 
+def test_calibration_logged(binary, source, tmp):
+    """object.calibration: orthotropic gives each coarser beam level its fitted factors, says
+    so on the console and logs them with the fit ratios under /levels/level_k; none logs
+    nothing and is the uncalibrated run."""
+    sets = ["time.duration=0.04", "object.calibration=orthotropic"]
+    out = os.path.join(tmp, "calibrated")
+    r = cli.run(binary, "run", os.path.join(source, "scenarios", "beam_adaptive.yaml"), "-o",
+                out, "--set", "output.vtk=false", *[a for x in sets for a in ("--set", x)])
+    check(r.returncode == 0, "calibrated beam_adaptive runs (exit %d) %s"
+          % (r.returncode, r.stderr[-200:]))
+    said = [line for line in r.stdout.splitlines() + r.stderr.splitlines()
+            if line.startswith("object.calibration: level")]
+    check(len(said) == 2, "one console line per coarser level (%d)" % len(said))
+    with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
+        levels = [h5["/levels/level_%d" % k].attrs for k in range(3)]
+        scales = [np.asarray(a["calibration_scales"]) for a in levels]
+        after = [np.asarray(levels[k]["calibration_sag_ratio_after"]) for k in range(2)]
+        before = np.asarray(levels[0]["calibration_sag_ratio_before"])
+        f1 = [float(levels[k]["calibration_frequency_ratio_after"][0]) for k in range(2)]
+    check(all(len(x) == 7 for x in scales) and np.all(scales[2] == 1)
+          and not np.allclose(scales[0], 1),
+          "seven factors per level, all 1 on the finest (%s)" % np.round(scales[0], 3))
+    check(before.min() < 0.3 and all(np.all(np.abs(a - 1) < 0.07) for a in after)
+          and all(abs(f - 1) < 0.06 for f in f1),
+          "beam L0 alone sagged %.2f of L2; calibrated, every sag ratio within 7 %% (%s) and f1 "
+          "within 6 %% (%s)" % (before.min(), [np.round(a, 3) for a in after], np.round(f1, 3)))
+    _, _, _, plain = run(binary, source, tmp, "beam_adaptive.yaml", "plain",
+                         ["time.duration=0.04"])
+    with h5py.File(os.path.join(plain, "log.h5"), "r") as h5:
+        check("calibration_scales" not in h5["/levels/level_0"].attrs,
+              "object.calibration: none logs no calibration")
+
+
 def main():
     args = cli.parse_args()
     if args is None:
@@ -77,6 +110,7 @@ def main():
         test_sudden_gravity(args.binary, args.source, tmp)
         test_load_ramp(args.binary, args.source, tmp)
         test_no_loads_no_change(args.binary, args.source, tmp)
+        test_calibration_logged(args.binary, args.source, tmp)
     return cli.report()
 
 
