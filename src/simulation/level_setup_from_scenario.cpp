@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/log.hpp"
+#include "simulation/calibration_cache.hpp"
 #include "simulation/contact_setup.hpp"
 #include "simulation/fixed_points.hpp"
 #include "simulation/level_consistency.hpp"
@@ -50,7 +51,16 @@ LevelLaws level_laws(const Scenario& sc, const std::vector<const TetMesh*>& mesh
   const MaterialLaw law = material_law(sc.material);
   out.laws.assign(meshes.size(), law);
   if (!sc.calibrate || meshes.size() < 2) return out;
-  out.calibration = calibrate_levels(meshes, law, select_fixed_points(meshes, sc.fixed));
+  const auto fixed = select_fixed_points(meshes, sc.fixed);
+  const std::filesystem::path cache = calibration_cache_dir();
+  const std::string key = calibration_key(meshes, law, fixed);
+  if (auto cached = read_cached_calibration(cache, key, meshes.size())) {
+    out.calibration = std::move(*cached);
+    info("object.calibration: read from the cache " + cache.string() + " (key " + key + ")");
+  } else {
+    out.calibration = calibrate_levels(meshes, law, fixed);
+    write_cached_calibration(cache, key, out.calibration);
+  }
   for (size_t l = 0; l < meshes.size(); ++l) {
     out.laws[l].scales = out.calibration[l].scales;
     if (l + 1 < meshes.size()) info(calibration_line(static_cast<int>(l), out.calibration[l]));

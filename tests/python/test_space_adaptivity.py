@@ -69,19 +69,27 @@ def test_no_loads_no_change(binary, source, tmp):
           "compare: %s)" % (differ or r.stdout.strip().splitlines()[-1:]))
 
 
+def run_calibrated(binary, source, out, cache):
+    r = cli.run(binary, "run", os.path.join(source, "scenarios", "beam_adaptive.yaml"), "-o", out,
+                "--set", "output.vtk=false", "--set", "time.duration=0.04",
+                "--set", "object.calibration=orthotropic",
+                env=dict(os.environ, MRSIM_CACHE_DIR=cache))
+    check(r.returncode == 0, "calibrated beam_adaptive runs (exit %d) %s"
+          % (r.returncode, r.stderr[-200:]))
+    return r.stdout + r.stderr
+
+
 def test_calibration_logged(binary, source, tmp):
     """object.calibration: orthotropic gives each coarser beam level its fitted factors, says
     so on the console and logs them with the fit ratios under /levels/level_k; none logs
-    nothing and is the uncalibrated run."""
-    sets = ["time.duration=0.04", "object.calibration=orthotropic"]
+    nothing. The fit is cached (MRSIM_CACHE_DIR): a second run reads it and is the same run,
+    bit for bit; a damaged cache file is said, ignored and rewritten."""
+    cache = os.path.join(tmp, "cache")
     out = os.path.join(tmp, "calibrated")
-    r = cli.run(binary, "run", os.path.join(source, "scenarios", "beam_adaptive.yaml"), "-o",
-                out, "--set", "output.vtk=false", *[a for x in sets for a in ("--set", x)])
-    check(r.returncode == 0, "calibrated beam_adaptive runs (exit %d) %s"
-          % (r.returncode, r.stderr[-200:]))
-    said = [line for line in r.stdout.splitlines() + r.stderr.splitlines()
-            if line.startswith("object.calibration: level")]
-    check(len(said) == 2, "one console line per coarser level (%d)" % len(said))
+    said = run_calibrated(binary, source, out, cache)
+    lines = [line for line in said.splitlines() if line.startswith("object.calibration: level")]
+    check(len(lines) == 2, "one console line per coarser level (%d)" % len(lines))
+    check("read from the cache" not in said, "the first run computes the calibration")
     with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
         levels = [h5["/levels/level_%d" % k].attrs for k in range(3)]
         scales = [np.asarray(a["calibration_scales"]) for a in levels]
@@ -95,6 +103,24 @@ def test_calibration_logged(binary, source, tmp):
           and all(abs(f - 1) < 0.06 for f in f1),
           "beam L0 alone sagged %.2f of L2; calibrated, every sag ratio within 7 %% (%s) and f1 "
           "within 6 %% (%s)" % (before.min(), [np.round(a, 3) for a in after], np.round(f1, 3)))
+    files = [f for f in os.listdir(os.path.join(cache, "calibration")) if f.endswith(".json")]
+    check(len(files) == 1, "one cache file written (%s)" % files)
+    again = os.path.join(tmp, "calibrated_again")
+    check("read from the cache" in run_calibrated(binary, source, again, cache),
+          "the second run reads the cache")
+    r = cli.run(binary, "compare", out, again)
+    check(r.returncode == 0, "the cached calibration gives the same run, bit for bit (%s)"
+          % r.stdout.strip().splitlines()[-1:])
+    with open(os.path.join(cache, "calibration", files[0]), "w") as f:
+        f.write('{"key": "torn')
+    damaged = os.path.join(tmp, "calibrated_damaged")
+    said = run_calibrated(binary, source, damaged, cache)
+    check("ignored the calibration cache" in said and "read from the cache" not in said,
+          "a damaged cache file is said and the calibration computed again")
+    check(cli.run(binary, "compare", out, damaged).returncode == 0,
+          "... to the same result, bit for bit")
+    check("read from the cache" in run_calibrated(binary, source, damaged, cache),
+          "and the rewritten file is read next time")
     _, _, _, plain = run(binary, source, tmp, "beam_adaptive.yaml", "plain",
                          ["time.duration=0.04"])
     with h5py.File(os.path.join(plain, "log.h5"), "r") as h5:
