@@ -51,8 +51,13 @@ Response respond(const ComponentStiffness& cs, const Params& s, bool held, int r
   std::optional<SparseLdlt> solver;
   if (held) {
     solver.emplace(K);
-    if (solver->info() != Eigen::Success)
-      throw InputError("object.calibration: a level's stiffness is singular (is it held?)");
+    // LDLᵀ succeeds on a singular K (a zero pivot is just small): a level held at collinear
+    // points still turns about their line, so the pivots are checked against the largest.
+    const Vector d = solver->vectorD();
+    if (solver->info() != Eigen::Success || !(d.minCoeff() > 1e-10 * d.maxCoeff()))
+      throw InputError(
+          "object.calibration: a level's fixed points do not hold it (collinear or too few: "
+          "it can still move rigidly); fix points that span a plane, or none (a free body)");
     for (size_t d = 0; d < loads.size(); ++d) {
       // The mass-weighted mean displacement along the load, f·u / Σm: what a sag is, on a
       // level whose mass differs from the finest one's (independent meshes of one surface).

@@ -135,6 +135,16 @@ TEST(LevelCalibration, LevelsHeldAtTooFewPointsAreAnInputError) {
       std::vector<std::uint8_t>(meshes[1].points.size(), 0)};
   fixed[0][0] = fixed[1][0] = 1;
   EXPECT_THROW(calibrate_levels({&meshes[0], &meshes[1]}, law(1e5, 0.3), fixed), InputError);
+  // Held along one edge (x axis): collinear, the level turns about it.
+  for (size_t l = 0; l < 2; ++l)
+    for (size_t i = 0; i < meshes[l].points.size(); ++i)
+      fixed[l][i] = meshes[l].points[i].y() < 1e-9 && meshes[l].points[i].z() < 1e-9;
+  try {
+    calibrate_levels({&meshes[0], &meshes[1]}, law(1e5, 0.3), fixed);
+    ADD_FAILURE() << "a level held along a line was calibrated";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("do not hold it"), std::string::npos) << e.what();
+  }
   fixed[0].assign(fixed[0].size(), 0);  // held on the fine level only
   fixed[1].assign(fixed[1].size(), 1);
   EXPECT_THROW(calibrate_levels({&meshes[0], &meshes[1]}, law(1e5, 0.3), fixed), InputError);
