@@ -34,6 +34,21 @@ struct LevelCalibration {
   int iterations = 0;
 };
 
+/// The ratio arrays of LevelCalibration by quantity and moment, for what stores them (log.h5's
+/// calibration_<quantity>_ratio_<when> attributes, the calibration cache's <quantity>_<when>).
+struct CalibrationRatios {
+  const char* quantity;  // sag, peak, frequency
+  const char* when;      // before, after
+  std::vector<double> LevelCalibration::*member;
+};
+inline constexpr CalibrationRatios kCalibrationRatios[] = {
+    {"sag", "before", &LevelCalibration::sag_before},
+    {"sag", "after", &LevelCalibration::sag_after},
+    {"peak", "before", &LevelCalibration::peak_before},
+    {"peak", "after", &LevelCalibration::peak_after},
+    {"frequency", "before", &LevelCalibration::frequency_before},
+    {"frequency", "after", &LevelCalibration::frequency_after}};
+
 /// One entry per level, the last (finest) one uncalibrated. `fixed`: per level, one flag per
 /// point (as HierarchySetup::fixed). Every level must be held at three points or more, or none
 /// at all (a free body: frequencies only); anything else is an InputError.

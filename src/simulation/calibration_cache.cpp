@@ -37,15 +37,10 @@ std::filesystem::path file_of(const std::filesystem::path& dir, const std::strin
 }
 
 nlohmann::json to_json(const LevelCalibration& c) {
-  const std::array<double, 7> s = c.scales.components();
-  return {{"scales", s},
-          {"sag_before", c.sag_before},
-          {"sag_after", c.sag_after},
-          {"peak_before", c.peak_before},
-          {"peak_after", c.peak_after},
-          {"frequency_before", c.frequency_before},
-          {"frequency_after", c.frequency_after},
-          {"iterations", c.iterations}};
+  nlohmann::json j = {{"scales", c.scales.components()}, {"iterations", c.iterations}};
+  for (const CalibrationRatios& r : kCalibrationRatios)
+    j[std::string(r.quantity) + "_" + r.when] = c.*r.member;
+  return j;
 }
 
 LevelCalibration from_json(const nlohmann::json& j) {
@@ -54,12 +49,8 @@ LevelCalibration from_json(const nlohmann::json& j) {
   for (double x : s)
     if (!(x > 0)) throw std::runtime_error("non-positive factor");
   c.scales = StiffnessScales::from_components(s);
-  c.sag_before = j.at("sag_before").get<std::vector<double>>();
-  c.sag_after = j.at("sag_after").get<std::vector<double>>();
-  c.peak_before = j.at("peak_before").get<std::vector<double>>();
-  c.peak_after = j.at("peak_after").get<std::vector<double>>();
-  c.frequency_before = j.at("frequency_before").get<std::vector<double>>();
-  c.frequency_after = j.at("frequency_after").get<std::vector<double>>();
+  for (const CalibrationRatios& r : kCalibrationRatios)
+    c.*r.member = j.at(std::string(r.quantity) + "_" + r.when).get<std::vector<double>>();
   c.iterations = j.at("iterations").get<int>();
   return c;
 }

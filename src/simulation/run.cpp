@@ -74,15 +74,11 @@ std::vector<std::vector<NamedValues>> calibration_attributes(
   std::vector<std::vector<NamedValues>> out;
   for (const LevelCalibration& c : calibration) {
     const std::array<double, 7> scales = c.scales.components();
-    std::vector<NamedValues> all = {{"calibration_scales", {scales.begin(), scales.end()}},
-                                    {"calibration_sag_ratio_before", c.sag_before},
-                                    {"calibration_sag_ratio_after", c.sag_after},
-                                    {"calibration_peak_ratio_before", c.peak_before},
-                                    {"calibration_peak_ratio_after", c.peak_after},
-                                    {"calibration_frequency_ratio_before", c.frequency_before},
-                                    {"calibration_frequency_ratio_after", c.frequency_after}};
+    std::vector<NamedValues> all = {{"calibration_scales", {scales.begin(), scales.end()}}};
     // The finest level (and a free body's sags) have no ratios: only what exists is written.
-    std::erase_if(all, [](const NamedValues& a) { return a.values.empty(); });
+    for (const CalibrationRatios& r : kCalibrationRatios)
+      if (!(c.*r.member).empty())
+        all.push_back({std::string("calibration_") + r.quantity + "_ratio_" + r.when, c.*r.member});
     out.push_back(std::move(all));
   }
   return out;
