@@ -55,9 +55,48 @@ void gradients(const GreenKernelData& m, const int* tets, const double (*x)[3],
       }
 }
 
-template <int B, bool Damped>
+// Where a block's nodal forces go: stored per tet (the pass of a per-point gather) ...
+struct StoreSink {
+  double (*out)[4][3];
+  template <int B>
+  void put(const GreenKernelData&, const int* tets, const double (&f)[4][3][B]) const {
+    for (int b = 0; b < B; ++b) {
+      double(&out_b)[4][3] = out[tets[b]];
+      for (int a = 0; a < 4; ++a)
+        for (int i = 0; i < 3; ++i) out_b[a][i] = f[a][i][b];
+    }
+  }
+};
+
+// ... or added at once to the points' forces, tet after tet. Over an ascending tet list each
+// point receives its terms in ascending tet order, the order of its incidence list: the sums
+// of the per-point gather, bit for bit (weight: skips the tets of weight zero and scales the
+// others, as the weighted gather does; mask: only points whose byte is set).
+struct ScatterSink {
+  const double* weight;
+  const unsigned char* mask;
+  double (*f)[3];
+  template <int B>
+  void put(const GreenKernelData& m, const int* tets, const double (&fv)[4][3][B]) const {
+    for (int b = 0; b < B; ++b) {
+      const double w = weight ? weight[tets[b]] : 1.0;
+      if (w == 0) continue;
+      const int(&t)[4] = m.tets[tets[b]];
+      for (int a = 0; a < 4; ++a) {
+        if (mask && !mask[t[a]]) continue;
+        double(&fp)[3] = f[t[a]];
+        if (weight)
+          for (int i = 0; i < 3; ++i) fp[i] += w * fv[a][i][b];
+        else
+          for (int i = 0; i < 3; ++i) fp[i] += fv[a][i][b];
+      }
+    }
+  }
+};
+
+template <int B, bool Damped, class Sink>
 void block(const GreenKernelData& m, const int* tets, const double (*u)[3], const double (*v)[3],
-           double (*out)[4][3]) {
+           const Sink& sink) {
   const double lambda = m.lambda, phi = m.phi;
   const double* two_mu = m.two_mu;  // per strain component (a calibrated level's scales)
   const double* two_psi = m.two_psi;
@@ -122,30 +161,27 @@ void block(const GreenKernelData& m, const int* tets, const double (*u)[3], cons
       for (int b = 0; b < B; ++b)
         f[a][i][b] = by_row(i, P[MRSIM_IX(i, 0)][b] * g[a][0][b], P[MRSIM_IX(i, 1)][b] * g[a][1][b],
                             P[MRSIM_IX(i, 2)][b] * g[a][2][b]);
-  for (int b = 0; b < B; ++b) {
-    double(&out_b)[4][3] = out[tets[b]];
-    for (int a = 0; a < 4; ++a)
-      for (int i = 0; i < 3; ++i) out_b[a][i] = f[a][i][b];
-  }
+  sink.template put<B>(m, tets, f);
 }
 
 #undef MRSIM_IX
 
-template <bool Damped>
+template <bool Damped, class Sink>
 void all_blocks(const GreenKernelData& m, const int* tets, int count, const double (*u)[3],
-                const double (*v)[3], double (*out)[4][3]) {
+                const double (*v)[3], const Sink& sink) {
   int k = 0;
-  for (; k + kBlock <= count; k += kBlock) block<kBlock, Damped>(m, tets + k, u, v, out);
-  for (; k < count; ++k) block<1, Damped>(m, tets + k, u, v, out);
+  for (; k + kBlock <= count; k += kBlock) block<kBlock, Damped>(m, tets + k, u, v, sink);
+  for (; k < count; ++k) block<1, Damped>(m, tets + k, u, v, sink);
 }
 
 // The whole pass, damped (φ or ψ non-zero, MaterialLaw::damped()) or not: what each build exports.
+template <class Sink>
 void every_block(const GreenKernelData& m, const int* tets, int count, const double (*u)[3],
-                 const double (*v)[3], double (*out)[4][3]) {
+                 const double (*v)[3], const Sink& sink) {
   if (m.phi != 0 || m.two_psi[0] != 0)  // scales are positive: ψ ≠ 0 ⇔ two_psi ≠ 0
-    all_blocks<true>(m, tets, count, u, v, out);
+    all_blocks<true>(m, tets, count, u, v, sink);
   else
-    all_blocks<false>(m, tets, count, u, v, out);
+    all_blocks<false>(m, tets, count, u, v, sink);
 }
 
 }  // namespace

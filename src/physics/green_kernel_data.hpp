@@ -15,11 +15,25 @@ struct GreenKernelData {
   double two_mu[9], two_psi[9];
 };
 
+/// Where the scattering form of the pass adds its forces (green_scatter_forces()).
+struct GreenScatterTarget {
+  const double* weight;        // per tet, or null for 1 (tets of weight zero are skipped)
+  const unsigned char* mask;   // per point, or null for every point
+  double (*f)[3];              // per point
+};
+
 /// out[tets[k]][a] = -V P ∇N_a for k in [0, count): the baseline build of the kernel.
 void green_nodal_forces_baseline(const GreenKernelData& d, const int* tets, int count,
                                  const double (*u)[3], const double (*v)[3], double (*out)[4][3]);
 /// The same kernel compiled with -mavx2 (x86-64 builds only; the caller checks the processor).
 void green_nodal_forces_avx2(const GreenKernelData& d, const int* tets, int count,
                              const double (*u)[3], const double (*v)[3], double (*out)[4][3]);
+/// The same kernel adding each block's forces to the points at once, each build.
+void green_scatter_forces_baseline(const GreenKernelData& d, const int* tets, int count,
+                                   const double (*u)[3], const double (*v)[3],
+                                   const GreenScatterTarget& target);
+void green_scatter_forces_avx2(const GreenKernelData& d, const int* tets, int count,
+                               const double (*u)[3], const double (*v)[3],
+                               const GreenScatterTarget& target);
 
 }  // namespace mrsim

@@ -9,7 +9,13 @@ namespace mrsim {
 
 void green_nodal_forces_avx2(const GreenKernelData& d, const int* tets, int count,
                              const double (*u)[3], const double (*v)[3], double (*out)[4][3]) {
-  every_block(d, tets, count, u, v, out);
+  every_block(d, tets, count, u, v, StoreSink{out});
+}
+
+void green_scatter_forces_avx2(const GreenKernelData& d, const int* tets, int count,
+                               const double (*u)[3], const double (*v)[3],
+                               const GreenScatterTarget& target) {
+  every_block(d, tets, count, u, v, ScatterSink{target.weight, target.mask, target.f});
 }
 
 }  // namespace mrsim

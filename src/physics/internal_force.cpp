@@ -48,6 +48,42 @@ inline void tet_nodal_forces(const LevelModel& m, int t, const Vec3* u, const Ve
   for (int a = 0; a < 4; ++a) out[a].noalias() = P * g[a];
 }
 
+// One thread: each tet's nodal forces are added to its vertices as soon as they are computed,
+// so they never go through memory (issue 17 point 4). Tet lists are ascending (live_tets(), the
+// level's own order), so each point receives its terms in the order of its incidence list,
+// which is the gather's order: the same bits as the threaded path below.
+void tet_pass_and_scatter(const LevelModel& m, IndexSet points, IndexSet tets,
+                          const double* weight, const Vec3* u, const Vec3* v, Vec3* f,
+                          ForceWorkspace& ws) {
+  const int* ids = tets.ids ? tets.ids : ws.all_tets.data();
+  const bool every_point = !points.ids && points.count == m.num_points();
+  unsigned char* mask = every_point ? nullptr : ws.point_mask.data();
+  for (int k = 0; k < points.count; ++k) {
+    f[points[k]] = Vec3::Zero();
+    if (mask) mask[points[k]] = 1;
+  }
+  if (m.law.strain == StrainMeasure::GreenLagrange) {
+    green_scatter_forces(m, ids, tets.count, u, v, weight, mask, f);
+  } else {
+    TetGradients tf;
+    for (int q = 0; q < tets.count; ++q) {
+      const int t = ids[q];
+      if (weight && weight[t] == 0) continue;
+      tet_nodal_forces(m, t, u, v, tf);
+      for (int a = 0; a < 4; ++a) {
+        const int p = m.geo.tets[t][a];
+        if (mask && !mask[p]) continue;
+        if (weight)
+          f[p] += weight[t] * tf[a];
+        else
+          f[p] += tf[a];
+      }
+    }
+  }
+  if (mask)
+    for (int k = 0; k < points.count; ++k) mask[points[k]] = 0;
+}
+
 // One pass over `tets`, then a per-point gather over the incident tets (each weighted by
 // weight[t] when given), so the sum order per point is fixed whatever the thread count.
 void tet_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets, const double* weight,
@@ -80,11 +116,7 @@ void tet_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets, co
     }
     f[i] = fi;
   };
-  if (!use_threads(n)) {  // no serialized region (core/parallel.hpp)
-    for (int k = 0; k < blocks; ++k) tet_block(k);
-    for (int k = 0; k < n; ++k) gather(k);
-    return;
-  }
+  if (!use_threads(n)) return tet_pass_and_scatter(m, points, tets, weight, u, v, f, ws);
 #pragma omp parallel
   {
 #pragma omp for schedule(static)
@@ -100,6 +132,7 @@ void ForceWorkspace::reserve_for(const LevelModel& model, bool per_tet) {
   if ((per_tet || model.law.strain == StrainMeasure::GreenLagrange) &&
       tet_force.size() != model.geo.tets.size()) {
     tet_force.resize(model.geo.tets.size());
+    point_mask.assign(model.num_points(), 0);
     all_tets.resize(model.geo.tets.size());
     for (size_t t = 0; t < all_tets.size(); ++t) all_tets[t] = static_cast<int>(t);
   }

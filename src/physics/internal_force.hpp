@@ -1,6 +1,7 @@
 #pragma once
 // Elastic + strain-rate damping forces of one level (method.md §2.2–2.3), computed as per-point
-// gathers so the result is bit-identical for any thread count.
+// gathers (or, on one thread, per-tet additions in the same order) so the result is
+// bit-identical for any thread count.
 //   Cauchy: f_i = -Σ_j K_ij (u_j - u_i) - Σ_j D_ij (v_j - v_i)     (edge matrices, §2.2)
 //   Green:  f_a = -Σ_{t∋a} V_t F_t (S_t + 𝒱_t) ∇N_a                (per-tet pass, then gather)
 #include <vector>
@@ -14,6 +15,7 @@ namespace mrsim {
 struct ForceWorkspace {
   std::vector<TetGradients> tet_force;  // -V P ∇N_a per tet and local vertex (Green, weighted)
   std::vector<int> all_tets;             // 0 .. tets-1, when a pass covers every tet
+  std::vector<unsigned char> point_mask; // the points a one-thread pass writes (zero between calls)
   void reserve_for(const LevelModel& model, bool per_tet = false);
 };
 

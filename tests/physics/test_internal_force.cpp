@@ -1,12 +1,15 @@
 // Properties of the elastic and damping forces (method.md §2): patch test, rigid motions,
 // consistency with the energy, linear limit of the Green model.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include <Eigen/Geometry>
 
+#include "core/parallel.hpp"
 #include "mesh/box_mesh.hpp"
 #include "physics/internal_force.hpp"
 #include "physics/laplacian_criterion.hpp"
@@ -208,4 +211,65 @@ TEST(Damping, RigidRotationRateIsNotDamped) {
     for (size_t i = 0; i < u.size(); ++i) v[i] = Vec3(mesh.points[i].z(), 0, 0);
     EXPECT_GT(max_norm(forces(m, u, v)), 1e-6);
   }
+}
+
+// On one thread the tet pass adds each tet's forces to its vertices at once; on several it
+// stores them and each point gathers its own. Over the ascending tet lists the hierarchy passes,
+// both add a point's terms in the same order: the same bits, for a subset of the points, with
+// tet weights (the energy coupling's shares, some zero) and without, for both strain measures.
+// Points outside the set are left as they were.
+TEST(TetPass, OneThreadScatterGivesTheThreadedGatherBits) {
+  const TetMesh mesh = jittered_box(4);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> d(-1, 1);
+  std::vector<Vec3> u(mesh.points.size()), v(mesh.points.size());
+  for (auto& x : u) x = 2e-2 * Vec3(d(rng), d(rng), d(rng));
+  for (auto& x : v) x = Vec3(d(rng), d(rng), d(rng));
+  const int saved = parallel_threshold(), saved_threads = omp_get_max_threads();
+  for (StrainMeasure s : {StrainMeasure::Cauchy, StrainMeasure::GreenLagrange}) {
+    const LevelModel m = build_level_model(mesh, law(s, 3, 7));
+    std::vector<int> points, tets;
+    for (int i = 0; i < m.num_points(); i += 3) points.push_back(i);
+    std::vector<unsigned char> mark(m.num_tets(), 0);
+    live_tets(m, IndexSet::of(points), mark, tets);
+    std::vector<double> weight(m.num_tets(), 0.0);
+    for (size_t k = 0; k < tets.size(); ++k) weight[tets[k]] = (k % 4) * 0.25;  // some zero
+    const Vec3 untouched(7, 7, 7);
+    for (bool weighted : {false, true}) {
+      std::vector<Vec3> f[2];
+      for (int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        set_parallel_threshold(1);
+        ForceWorkspace ws;
+        std::vector<Vec3>& out = f[threads - 1];
+        out.assign(u.size(), untouched);
+        if (weighted)
+          weighted_internal_forces(m, IndexSet::of(points), IndexSet::of(tets), weight.data(),
+                                   u.data(), v.data(), out.data(), ws);
+        else if (s == StrainMeasure::GreenLagrange)  // Cauchy's plain path is the edge gather
+          internal_forces(m, IndexSet::of(points), IndexSet::of(tets), u.data(), v.data(),
+                          out.data(), ws);
+        else
+          weighted_internal_forces(m, IndexSet::of(points), IndexSet::of(tets), nullptr,
+                                   u.data(), v.data(), out.data(), ws);
+      }
+      set_parallel_threshold(saved);
+      EXPECT_EQ(std::memcmp(f[0].data(), f[1].data(), f[0].size() * sizeof(Vec3)), 0)
+          << (weighted ? "weighted " : "") << (s == StrainMeasure::Cauchy ? "Cauchy" : "Green");
+      int moved = 0;
+      for (int i = 0; i < m.num_points(); ++i) {
+        const bool in_set = i % 3 == 0;
+        if (!in_set) {
+          EXPECT_EQ(f[0][i], untouched) << i;
+        }
+        if (in_set && !weighted) {
+          const Vec3 ref = point_internal_force(m, i, u.data(), v.data());
+          EXPECT_LT((f[0][i] - ref).norm(), 1e-9 * (ref.norm() + force_scale(m))) << i;
+        }
+        moved += in_set && f[0][i].norm() > 0;
+      }
+      EXPECT_GT(moved, m.num_points() / 4);
+    }
+  }
+  omp_set_num_threads(saved_threads);
 }
