@@ -1,8 +1,9 @@
 // The blocked Green–Lagrange tet pass (physics/green_nodal_forces) against the per-tet
 // green_piola() it replaces in the force kernel: bit for bit, for every tet of lists of any
 // length and order (full blocks of eight and remainders), damped and undamped, at small and
-// large deformation, for the baseline and the AVX2 builds of the kernel. Bit-identity is what keeps every golden file and the thread-count
-// independence of the results.
+// large deformation, for the baseline and the AVX2 builds of the kernel; and its scattering form
+// (one thread) against the per-point gather of those per-tet forces. Bit-identity is what keeps
+// every golden file and the thread-count independence of the results.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -89,6 +90,79 @@ TEST(GreenNodalForces, BitIdenticalToGreenPiola) {
           }
         }
     }
+}
+
+using Scatter = void (*)(const GreenKernelData&, const int*, int, const double (*)[3],
+                        const double (*)[3], const GreenScatterTarget&);
+
+std::vector<std::pair<const char*, Scatter>> scatters() {
+  std::vector<std::pair<const char*, Scatter>> k{{"dispatched", nullptr},
+                                                 {"baseline", &green_scatter_forces_baseline}};
+#if defined(__x86_64__)
+  if (__builtin_cpu_supports("avx2")) k.emplace_back("avx2", &green_scatter_forces_avx2);
+#endif
+  return k;
+}
+
+// The scattering pass adds each tet's forces to its vertices in list order; over an ascending
+// list that is each point's incidence order, so it must give the gather's sums bit for bit:
+// weighted (some weights zero) and masked, over lists that end in a full block of sixteen, a
+// block of eight and single tets.
+TEST(GreenScatterForces, BitIdenticalToTheGatherOfGreenPiola) {
+  TetMesh mesh = make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.06, 0.04), 7, 5, 4);
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> jitter(-0.002, 0.002);
+  for (Vec3& p : mesh.points) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
+  MaterialLaw law;
+  law.strain = StrainMeasure::GreenLagrange;
+  law.lambda = 5.0e5;
+  law.mu = 3.0e4;
+  for (const bool damped : {false, true}) {
+    law.psi = damped ? 20 : 0;
+    const LevelModel m = build_level_model(mesh, law);
+    std::uniform_real_distribution<double> d(-3e-2, 3e-2);
+    std::vector<Vec3> u(m.num_points()), v(m.num_points());
+    for (int i = 0; i < m.num_points(); ++i) {
+      u[i] = Vec3(d(rng), d(rng), d(rng));
+      v[i] = 10 * Vec3(d(rng), d(rng), d(rng));
+    }
+    std::vector<int> list;
+    for (int t = 0; t < m.num_tets(); ++t)
+      if (t % 3 != 1) list.push_back(t);
+    list.resize(16 * (list.size() / 16 - 1) + 8 + 5);
+    std::vector<double> weight(m.num_tets(), 0.0);
+    for (size_t k = 0; k < list.size(); ++k) weight[list[k]] = 0.25 * (k % 5 == 0 ? 0 : k % 4 + 1);
+    std::vector<unsigned char> mask(m.num_points(), 0);
+    for (int i = 0; i < m.num_points(); i += 2) mask[i] = 1;
+    std::vector<TetGradients> per_tet(m.num_tets());
+    for (int t : list) per_tet[t] = reference(m, t, u.data(), v.data());
+    for (const bool weighted : {false, true}) {
+      std::vector<Vec3> expected(m.num_points(), Vec3::Zero());
+      for (int i = 0; i < m.num_points(); i += 2)
+        for (int s = m.adj.inc_start[i]; s < m.adj.inc_start[i + 1]; ++s) {
+          const int t = m.adj.inc_tet[s];
+          if (!std::binary_search(list.begin(), list.end(), t)) continue;
+          if (!weighted)
+            expected[i] += per_tet[t][m.adj.inc_local[s]];
+          else if (weight[t] != 0)
+            expected[i] += weight[t] * per_tet[t][m.adj.inc_local[s]];
+        }
+      for (const auto& [name, scatter] : scatters()) {
+        std::vector<Vec3> f(m.num_points(), Vec3::Zero());
+        const double* w = weighted ? weight.data() : nullptr;
+        const int n = static_cast<int>(list.size());
+        if (scatter == nullptr)
+          green_scatter_forces(m, list.data(), n, u.data(), v.data(), w, mask.data(), f.data());
+        else
+          scatter(green_kernel_data(m), list.data(), n,
+                  reinterpret_cast<const double(*)[3]>(u.data()),
+                  reinterpret_cast<const double(*)[3]>(v.data()),
+                  GreenScatterTarget{w, mask.data(), reinterpret_cast<double(*)[3]>(f.data())});
+        EXPECT_EQ(std::memcmp(expected.data(), f.data(), f.size() * sizeof(Vec3)), 0)
+            << name << (weighted ? " weighted" : "") << (damped ? " damped" : "");
+      }
+    }
+  }
 }
 
 }  // namespace
