@@ -14,7 +14,8 @@
 namespace mrsim {
 
 HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>& meshes,
-                                               const HierarchySetup& setup) {
+                                               const HierarchySetup& setup,
+                                               std::vector<LevelModel> models) {
   const int L = static_cast<int>(meshes.size());
   coupling_ = setup.coupling;
   // One level: no ghost, nothing to send.
@@ -23,8 +24,11 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   calibration_ = setup.calibration;
   for (int l = 0; l < L; ++l) {
     const MaterialLaw& law = setup.level_laws.empty() ? setup.law : setup.level_laws[l];
-    models_.push_back(std::make_unique<LevelModel>(
-        build_level_model(*meshes[l], law, is_semi_implicit(setup.integrator))));
+    if (static_cast<int>(models.size()) == L && models[l].mesh == meshes[l])
+      models_.push_back(std::make_unique<LevelModel>(std::move(models[l])));
+    else
+      models_.push_back(std::make_unique<LevelModel>(
+          build_level_model(*meshes[l], law, is_semi_implicit(setup.integrator))));
     levels.push_back({meshes[l], &models_[l]->adj});
   }
   hierarchy_ = std::make_unique<Hierarchy>(levels, build_level_links(levels));

@@ -56,7 +56,10 @@ struct HierarchySetup {
 
 class HierarchicalSimulation {
  public:
-  HierarchicalSimulation(const std::vector<const TetMesh*>& meshes, const HierarchySetup& setup);
+  /// `models`: the levels' models when the caller built them already (level_models() in
+  /// simulation/stable_step.hpp, with the setup's laws and integrator); built here otherwise.
+  HierarchicalSimulation(const std::vector<const TetMesh*>& meshes, const HierarchySetup& setup,
+                         std::vector<LevelModel> models = {});
 
   int num_levels() const { return static_cast<int>(models_.size()); }
   const LevelModel& model(int l) const { return *models_[l]; }

@@ -491,9 +491,11 @@ RunSummary execute(const Scenario& input, const RunOptions& options, const Check
                                      std::chrono::duration<double>(wall_before));
   const std::vector<TetMesh> meshes = load_meshes(input);
   const LevelLaws laws = level_laws(input, pointers(meshes));
-  const Scenario sc = with_stable_substeps(input, pointers(meshes), &laws.laws);
+  // Built once: the computed substeps and the simulation read the same models.
+  std::vector<LevelModel> models = level_models(input, pointers(meshes), laws.laws);
+  const Scenario sc = with_stable_substeps(input, pointers(meshes), &laws.laws, &models);
   const HierarchySetup setup = hierarchy_setup(sc, pointers(meshes), &laws);
-  HierarchicalSimulation sim(pointers(meshes), setup);
+  HierarchicalSimulation sim(pointers(meshes), setup, std::move(models));
   SpaceAdaptivity adapt(space_settings(sc), sim);
   const DivergenceGuard guard =
       DivergenceGuard::for_level(sim.model(0), sc.time.divergence_energy_factor);

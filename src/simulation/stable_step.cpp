@@ -97,8 +97,18 @@ double shortest_edge(const TetMesh& mesh) {
   return std::sqrt(h2);
 }
 
+std::vector<LevelModel> level_models(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
+                                     const std::vector<MaterialLaw>& laws) {
+  std::vector<LevelModel> models;
+  models.reserve(meshes.size());
+  for (size_t l = 0; l < meshes.size(); ++l)
+    models.push_back(build_level_model(*meshes[l], laws[l], is_semi_implicit(sc.time.integrator)));
+  return models;
+}
+
 StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
-                       const std::vector<MaterialLaw>* laws) {
+                       const std::vector<MaterialLaw>* laws,
+                       const std::vector<LevelModel>* built) {
   const MaterialLaw law = material_law(sc.material);
   const std::vector<MaterialLaw> computed = laws ? std::vector<MaterialLaw>{}
                                                  : level_laws(sc, meshes).laws;
@@ -108,12 +118,13 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
   if (sc.space.enabled)
     last = sc.space.max_level >= 0 ? std::min<int>(sc.space.max_level, meshes.size() - 1)
                                    : static_cast<int>(meshes.size()) - 1;
-  std::vector<LevelModel> models;
+  std::vector<LevelModel> own_models;
+  if (!built)
+    for (int l = 0; l <= last; ++l)
+      own_models.push_back(build_level_model(*meshes[l], (*laws)[l], semi));
+  const std::vector<LevelModel>& models = built ? *built : own_models;
   std::vector<std::vector<PointInertia>> star;
-  for (int l = 0; l <= last; ++l) {
-    models.push_back(build_level_model(*meshes[l], (*laws)[l], semi));
-    star.push_back(models.back().star);
-  }
+  for (int l = 0; l <= last; ++l) star.push_back(models[l].star);
   auto own = [&](int l, int p) {  // without contact
     const PointInertia& s = models[l].star[p];
     return calibrated(s, models[l], semi, sc.time_levels.enabled);
@@ -137,8 +148,9 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
 }
 
 Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
-                              const std::vector<MaterialLaw>* laws) {
-  const StableStep stable = stable_step(sc, meshes, laws);
+                              const std::vector<MaterialLaw>* laws,
+                              const std::vector<LevelModel>* models) {
+  const StableStep stable = stable_step(sc, meshes, laws, models);
   const double allowed = sc.time.courant * stable.dt;
   const bool time_levels = sc.time_levels.enabled;
   std::ostringstream where;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mesh/tet_mesh.hpp"
+#include "physics/level_model.hpp"
 #include "scenario/scenario.hpp"
 
 namespace mrsim {
@@ -28,17 +29,25 @@ struct StableStep {
   std::string cause;  // what sets it there, in words
 };
 
+/// Every level's model with its material (level_laws()) and the scenario's integrator: what the
+/// stable step and the simulation are built from (the run builds them once and hands them to
+/// both: the spectra at set-up are half its cost, docs/performance.md).
+std::vector<LevelModel> level_models(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
+                                     const std::vector<MaterialLaw>& laws);
+
 /// The stable step estimate (before time.courant) of the scenario's levels 0..max_level (0
 /// only when space adaptivity is off). `laws`: each level's material (level_laws(), computed
-/// when not given).
+/// when not given); `models`: the levels' models (level_models(), built when not given).
 StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
-                       const std::vector<MaterialLaw>* laws = nullptr);
+                       const std::vector<MaterialLaw>* laws = nullptr,
+                       const std::vector<LevelModel>* models = nullptr);
 
 /// The scenario with time.substeps filled in when it was omitted (also in `resolved`, so the
 /// written scenario.yaml reruns identically), with an info line saying so; when it was given
 /// and the step exceeds C × the estimate, a warning naming the level and the substeps needed.
 /// Throws InputError when the step needed is beyond kMaxSubsteps per frame.
 Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
-                              const std::vector<MaterialLaw>* laws = nullptr);
+                              const std::vector<MaterialLaw>* laws = nullptr,
+                              const std::vector<LevelModel>* models = nullptr);
 
 }  // namespace mrsim

@@ -54,6 +54,10 @@ TEST(StableStep, OmittedSubstepsAreThePowerOfTwoThatKeepsTheFinestLevelStable) {
   const double limit = level_estimate(fine, sc);  // the finest level sets it
   EXPECT_LT(limit, level_estimate(coarse, sc));
   EXPECT_DOUBLE_EQ(stable_step(sc, {&coarse, &fine}).dt, limit);
+  // From the models a run builds once for the step and the simulation: the same estimate.
+  const std::vector<MaterialLaw> laws(2, material_law(sc.material));
+  const std::vector<LevelModel> models = level_models(sc, {&coarse, &fine}, laws);
+  EXPECT_EQ(stable_step(sc, {&coarse, &fine}, &laws, &models).dt, limit);
   const double dt = 0.02 / out.time.substeps;
   EXPECT_LE(dt, limit);
   EXPECT_GT(2 * dt, limit);  // the smallest such power of two
