@@ -71,7 +71,8 @@ struct StoreSink {
 // ... or added at once to the points' forces, tet after tet. Over an ascending tet list each
 // point receives its terms in ascending tet order, the order of its incidence list: the sums
 // of the per-point gather, bit for bit (weight: skips the tets of weight zero and scales the
-// others, as the weighted gather does; mask: only points whose byte is set).
+// others, as the weighted gather does; mask: only points whose byte is set; and only the
+// points of [first, last), one thread's share).
 struct ScatterSink {
   // Sixteen tets a block: bench_internal_force green, one thread, AVX2 build, paired runs:
   // 40.6–42.0 M tet-updates/s undamped (8 a block: 32.0–33.2), 26.7–27.3 damped (24.7–25.7).
@@ -79,6 +80,7 @@ struct ScatterSink {
   const double* weight;
   const unsigned char* mask;
   double (*f)[3];
+  int first, last;  // the points [first, last) only
   template <int B>
   void put(const GreenKernelData& m, const int* tets, const double (&fv)[4][3][B]) const {
     for (int b = 0; b < B; ++b) {
@@ -86,7 +88,7 @@ struct ScatterSink {
       if (w == 0) continue;
       const int(&t)[4] = m.tets[tets[b]];
       for (int a = 0; a < 4; ++a) {
-        if (mask && !mask[t[a]]) continue;
+        if (t[a] < first || t[a] >= last || (mask && !mask[t[a]])) continue;
         double(&fp)[3] = f[t[a]];
         if (weight)
           for (int i = 0; i < 3; ++i) fp[i] += w * fv[a][i][b];

@@ -20,6 +20,7 @@ struct GreenScatterTarget {
   const double* weight;        // per tet, or null for 1 (tets of weight zero are skipped)
   const unsigned char* mask;   // per point, or null for every point
   double (*f)[3];              // per point
+  int first = 0, last = 1 << 30;  // only the points [first, last) are written
 };
 
 /// out[tets[k]][a] = -V P ∇N_a for k in [0, count): the baseline build of the kernel.

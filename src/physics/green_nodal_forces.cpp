@@ -59,11 +59,11 @@ void green_nodal_forces_baseline(const GreenKernelData& d, const int* tets, int 
 
 void green_scatter_forces(const LevelModel& m, const int* tets, int count, const Vec3* u,
                           const Vec3* v, const double* weight, const unsigned char* mask,
-                          Vec3* f) {
+                          Vec3* f, int first, int last) {
   const GreenKernelData d = green_kernel_data(m);
   const auto* u3 = reinterpret_cast<const double(*)[3]>(u);
   const auto* v3 = reinterpret_cast<const double(*)[3]>(v);
-  const GreenScatterTarget target{weight, mask, reinterpret_cast<double(*)[3]>(f)};
+  const GreenScatterTarget target{weight, mask, reinterpret_cast<double(*)[3]>(f), first, last};
 #if defined(MRSIM_AVX2_KERNEL)
   if (use_avx2()) return green_scatter_forces_avx2(d, tets, count, u3, v3, target);
 #endif
@@ -73,7 +73,7 @@ void green_scatter_forces(const LevelModel& m, const int* tets, int count, const
 void green_scatter_forces_baseline(const GreenKernelData& d, const int* tets, int count,
                                    const double (*u)[3], const double (*v)[3],
                                    const GreenScatterTarget& target) {
-  every_block(d, tets, count, u, v, ScatterSink{target.weight, target.mask, target.f});
+  every_block(d, tets, count, u, v, ScatterSink{target.weight, target.mask, target.f, target.first, target.last});
 }
 
 }  // namespace mrsim

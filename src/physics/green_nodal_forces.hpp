@@ -18,12 +18,13 @@ void green_nodal_forces(const LevelModel& m, const int* tets, int count, const V
 
 /// The same pass adding each tet's forces to its vertices at once, tets in the order given:
 /// f[p] += w_t (-V P ∇N_a) for the vertex p = a of tets[k], k ascending, where mask[p] is set
-/// (every vertex when mask is null), with w_t = weight[t] and tets of weight zero skipped (w = 1
-/// when weight is null). Over an ascending tet list the sums are those of a per-point gather in
-/// incidence order (internal_force.cpp), bit for bit; one thread only.
+/// (every vertex when mask is null) and first <= p < last, with w_t = weight[t] and tets of
+/// weight zero skipped (w = 1 when weight is null). Over an ascending tet list the sums are those
+/// of a per-point gather in incidence order (internal_force.cpp), bit for bit. Threads that
+/// share a call's points out by disjoint ranges give the same bits.
 void green_scatter_forces(const LevelModel& m, const int* tets, int count, const Vec3* u,
                           const Vec3* v, const double* weight, const unsigned char* mask,
-                          Vec3* f);
+                          Vec3* f, int first = 0, int last = 1 << 30);
 
 /// The level's arrays as the kernel builds read them (green_kernel_data.hpp): the same
 /// pass through green_nodal_forces_baseline() or green_nodal_forces_avx2() directly.

@@ -15,7 +15,7 @@ void green_nodal_forces_avx2(const GreenKernelData& d, const int* tets, int coun
 void green_scatter_forces_avx2(const GreenKernelData& d, const int* tets, int count,
                                const double (*u)[3], const double (*v)[3],
                                const GreenScatterTarget& target) {
-  every_block(d, tets, count, u, v, ScatterSink{target.weight, target.mask, target.f});
+  every_block(d, tets, count, u, v, ScatterSink{target.weight, target.mask, target.f, target.first, target.last});
 }
 
 }  // namespace mrsim

@@ -48,13 +48,14 @@ inline void tet_nodal_forces(const LevelModel& m, int t, const Vec3* u, const Ve
   for (int a = 0; a < 4; ++a) out[a].noalias() = P * g[a];
 }
 
-// One thread: each tet's nodal forces are added to its vertices as soon as they are computed,
-// so they never go through memory (issue 17 point 4). Tet lists are ascending (live_tets(), the
-// level's own order), so each point receives its terms in the order of its incidence list,
-// which is the gather's order: the same bits as the threaded path below.
+// Each tet's nodal forces are added to its vertices as soon as they are computed, so they never
+// go through memory (issue 17 point 4). Tet lists are ascending (live_tets(), the level's own
+// order), so each point receives its terms in the order of its incidence list, which is the
+// gather's order: the same bits as the stored pass and gather below. One thread.
 void tet_pass_and_scatter(const LevelModel& m, IndexSet points, IndexSet tets,
                           const double* weight, const Vec3* u, const Vec3* v, Vec3* f,
                           ForceWorkspace& ws) {
+  ws.reserve_for(m);
   const int* ids = tets.ids ? tets.ids : ws.all_tets.data();
   const bool every_point = !points.ids && points.count == m.num_points();
   unsigned char* mask = every_point ? nullptr : ws.point_mask.data();
@@ -84,16 +85,64 @@ void tet_pass_and_scatter(const LevelModel& m, IndexSet points, IndexSet tets,
     for (int k = 0; k < points.count; ++k) mask[points[k]] = 0;
 }
 
+// Green–Lagrange on several threads: thread c owns the points of its share of `points`
+// (ascending: an id range [first, last)) and passes, in list order, every tet with a vertex
+// there, adding forces to its own points only. Each point still receives its terms in
+// ascending tet order from one thread: the same bits as one thread. Tets across two ranges are
+// passed by both (few when the mesh is numbered compactly).
+void threaded_green_scatter(const LevelModel& m, IndexSet points, IndexSet tets,
+                            const double* weight, const Vec3* u, const Vec3* v, Vec3* f,
+                            ForceWorkspace& ws) {
+#ifndef _OPENMP
+  return tet_pass_and_scatter(m, points, tets, weight, u, v, f, ws);
+#else
+  ws.reserve_for(m);
+  const int* ids = tets.ids ? tets.ids : ws.all_tets.data();
+  const bool every_point = !points.ids && points.count == m.num_points();
+  unsigned char* mask = every_point ? nullptr : ws.point_mask.data();
+  ws.thread_tets.resize(omp_get_max_threads());
+  const int n = points.count;
+#pragma omp parallel
+  {
+    const int threads = omp_get_num_threads(), c = omp_get_thread_num();
+    const int lo = static_cast<int>(static_cast<long long>(n) * c / threads);
+    const int hi = static_cast<int>(static_cast<long long>(n) * (c + 1) / threads);
+    const int first = lo < n ? points[lo] : m.num_points();
+    const int last = c + 1 < threads && hi < n ? points[hi] : m.num_points();
+    for (int k = lo; k < hi; ++k) {
+      f[points[k]] = Vec3::Zero();
+      if (mask) mask[points[k]] = 1;
+    }
+    std::vector<int>& mine = ws.thread_tets[c];
+    mine.clear();
+    for (int q = 0; q < tets.count; ++q) {
+      const Tet& t = m.geo.tets[ids[q]];
+      for (int a = 0; a < 4; ++a)
+        if (t[a] >= first && t[a] < last) {
+          mine.push_back(ids[q]);
+          break;
+        }
+    }
+    green_scatter_forces(m, mine.data(), static_cast<int>(mine.size()), u, v, weight, mask, f,
+                         first, last);
+    if (mask)
+      for (int k = lo; k < hi; ++k) mask[points[k]] = 0;
+  }
+#endif
+}
+
 // One pass over `tets`, then a per-point gather over the incident tets (each weighted by
 // weight[t] when given), so the sum order per point is fixed whatever the thread count.
 void tet_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets, const double* weight,
                          const Vec3* u, const Vec3* v, Vec3* f, ForceWorkspace& ws) {
   const int nt = tets.count;
   const int n = points.count;
+  const bool green = m.law.strain == StrainMeasure::GreenLagrange;
+  if (!use_threads(n)) return tet_pass_and_scatter(m, points, tets, weight, u, v, f, ws);
+  if (green) return threaded_green_scatter(m, points, tets, weight, u, v, f, ws);
   ws.reserve_for(m, true);
   TetGradients* tf = ws.tet_force.data();
   // Green–Lagrange: blocks of tets through green_nodal_forces (SIMD across tets, the same bits).
-  const bool green = m.law.strain == StrainMeasure::GreenLagrange;
   const int* ids = tets.ids ? tets.ids : ws.all_tets.data();
   const int blocks = (nt + kTetBlock - 1) / kTetBlock;
   const auto tet_block = [&](int k) {
@@ -116,7 +165,6 @@ void tet_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets, co
     }
     f[i] = fi;
   };
-  if (!use_threads(n)) return tet_pass_and_scatter(m, points, tets, weight, u, v, f, ws);
 #pragma omp parallel
   {
 #pragma omp for schedule(static)
@@ -129,13 +177,12 @@ void tet_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets, co
 }  // namespace
 
 void ForceWorkspace::reserve_for(const LevelModel& model, bool per_tet) {
-  if ((per_tet || model.law.strain == StrainMeasure::GreenLagrange) &&
-      tet_force.size() != model.geo.tets.size()) {
-    tet_force.resize(model.geo.tets.size());
+  if (all_tets.size() != model.geo.tets.size()) {
     point_mask.assign(model.num_points(), 0);
     all_tets.resize(model.geo.tets.size());
     for (size_t t = 0; t < all_tets.size(); ++t) all_tets[t] = static_cast<int>(t);
   }
+  if (per_tet && tet_force.size() != model.geo.tets.size()) tet_force.resize(model.geo.tets.size());
 }
 
 void internal_forces(const LevelModel& model, const Vec3* u, const Vec3* v, Vec3* f,

@@ -13,9 +13,11 @@ namespace mrsim {
 
 /// Scratch memory reused across steps (no allocation in the step loop).
 struct ForceWorkspace {
-  std::vector<TetGradients> tet_force;  // -V P ∇N_a per tet and local vertex (Green, weighted)
+  std::vector<TetGradients> tet_force;  // -V P ∇N_a per tet and vertex (stored pass, Cauchy)
   std::vector<int> all_tets;             // 0 .. tets-1, when a pass covers every tet
-  std::vector<unsigned char> point_mask; // the points a one-thread pass writes (zero between calls)
+  std::vector<unsigned char> point_mask; // the points a pass writes (zero between calls)
+  std::vector<std::vector<int>> thread_tets;  // each thread's tets (threaded Green pass)
+  /// Sizes the arrays for `model`; the per-tet forces only with `per_tet`.
   void reserve_for(const LevelModel& model, bool per_tet = false);
 };
 

@@ -213,12 +213,13 @@ TEST(Damping, RigidRotationRateIsNotDamped) {
   }
 }
 
-// On one thread the tet pass adds each tet's forces to its vertices at once; on several it
-// stores them and each point gathers its own. Over the ascending tet lists the hierarchy passes,
-// both add a point's terms in the same order: the same bits, for a subset of the points, with
-// tet weights (the energy coupling's shares, some zero) and without, for both strain measures.
-// Points outside the set are left as they were.
-TEST(TetPass, OneThreadScatterGivesTheThreadedGatherBits) {
+// The tet pass on one thread adds each tet's forces to its vertices at once; on two, Green–
+// Lagrange splits the points into id ranges, each thread passing the tets that touch its range,
+// and Cauchy stores per-tet forces that each point gathers. Over the ascending tet lists the
+// hierarchy passes, all add a point's terms in the same order: the same bits, for a subset of
+// the points, with tet weights (the energy coupling's shares, some zero) and without, for both
+// strain measures. Points outside the set are left as they were.
+TEST(TetPass, OneAndTwoThreadsGiveTheSameBits) {
   const TetMesh mesh = jittered_box(4);
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> d(-1, 1);
