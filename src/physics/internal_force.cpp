@@ -10,8 +10,6 @@ namespace mrsim {
 
 namespace {
 
-constexpr int kTetBlock = 8;  // tets per task of the tet pass (green_nodal_forces' block)
-
 void cauchy_gather(const LevelModel& m, IndexSet points, const Vec3* u, const Vec3* v, Vec3* f) {
   const int n = points.count;
   const bool damped = !m.D.empty();
@@ -51,7 +49,8 @@ inline void tet_nodal_forces(const LevelModel& m, int t, const Vec3* u, const Ve
 // Each tet's nodal forces are added to its vertices as soon as they are computed, so they never
 // go through memory (issue 17 point 4). Tet lists are ascending (live_tets(), the level's own
 // order), so each point receives its terms in the order of its incidence list, which is the
-// gather's order: the same bits as the stored pass and gather below. One thread.
+// gather's order: the same bits as the stored pass and gather below. One thread, either strain
+// measure (Cauchy comes here only for the weighted interface pass).
 void tet_pass_and_scatter(const LevelModel& m, IndexSet points, IndexSet tets,
                           const double* weight, const Vec3* u, const Vec3* v, Vec3* f,
                           ForceWorkspace& ws) {
@@ -131,28 +130,17 @@ void threaded_green_scatter(const LevelModel& m, IndexSet points, IndexSet tets,
 #endif
 }
 
-// One pass over `tets`, then a per-point gather over the incident tets (each weighted by
+// Cauchy's per-tet forces on several threads (the weighted interface pass): one pass over
+// `tets` storing them, then a per-point gather over the incident tets (each weighted by
 // weight[t] when given), so the sum order per point is fixed whatever the thread count.
-void tet_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets, const double* weight,
-                         const Vec3* u, const Vec3* v, Vec3* f, ForceWorkspace& ws) {
+void stored_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets,
+                            const double* weight, const Vec3* u, const Vec3* v, Vec3* f,
+                            ForceWorkspace& ws) {
   const int nt = tets.count;
   const int n = points.count;
-  const bool green = m.law.strain == StrainMeasure::GreenLagrange;
-  if (!use_threads(n)) return tet_pass_and_scatter(m, points, tets, weight, u, v, f, ws);
-  if (green) return threaded_green_scatter(m, points, tets, weight, u, v, f, ws);
   ws.reserve_for(m, true);
   TetGradients* tf = ws.tet_force.data();
-  // Green–Lagrange: blocks of tets through green_nodal_forces (SIMD across tets, the same bits).
   const int* ids = tets.ids ? tets.ids : ws.all_tets.data();
-  const int blocks = (nt + kTetBlock - 1) / kTetBlock;
-  const auto tet_block = [&](int k) {
-    const int first = k * kTetBlock, count = std::min(kTetBlock, nt - first);
-    if (green) {
-      green_nodal_forces(m, ids + first, count, u, v, tf);
-      return;
-    }
-    for (int q = first; q < first + count; ++q) tet_nodal_forces(m, ids[q], u, v, tf[ids[q]]);
-  };
   const auto gather = [&](int k) {
     const int i = points[k];
     Vec3 fi = Vec3::Zero();
@@ -168,10 +156,20 @@ void tet_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets, co
 #pragma omp parallel
   {
 #pragma omp for schedule(static)
-    for (int k = 0; k < blocks; ++k) tet_block(k);
+    for (int q = 0; q < nt; ++q) tet_nodal_forces(m, ids[q], u, v, tf[ids[q]]);
 #pragma omp for schedule(static)
     for (int k = 0; k < n; ++k) gather(k);
   }
+}
+
+// The per-tet pass and the sum over each point's tets, by whichever of the three forms above
+// suits the thread count and the strain measure: the same bits from each.
+void tet_pass(const LevelModel& m, IndexSet points, IndexSet tets, const double* weight,
+              const Vec3* u, const Vec3* v, Vec3* f, ForceWorkspace& ws) {
+  if (!use_threads(points.count)) return tet_pass_and_scatter(m, points, tets, weight, u, v, f, ws);
+  if (m.law.strain == StrainMeasure::GreenLagrange)
+    return threaded_green_scatter(m, points, tets, weight, u, v, f, ws);
+  stored_pass_and_gather(m, points, tets, weight, u, v, f, ws);
 }
 
 }  // namespace
@@ -196,13 +194,13 @@ void internal_forces(const LevelModel& model, IndexSet points, IndexSet tets, co
   if (model.law.strain == StrainMeasure::Cauchy)
     cauchy_gather(model, points, u, v, f);
   else
-    tet_pass_and_gather(model, points, tets, nullptr, u, v, f, ws);
+    tet_pass(model, points, tets, nullptr, u, v, f, ws);
 }
 
 void weighted_internal_forces(const LevelModel& model, IndexSet points, IndexSet tets,
                               const double* tet_weight, const Vec3* u, const Vec3* v, Vec3* f,
                               ForceWorkspace& ws) {
-  tet_pass_and_gather(model, points, tets, tet_weight, u, v, f, ws);
+  tet_pass(model, points, tets, tet_weight, u, v, f, ws);
 }
 
 void live_tets(const LevelModel& m, IndexSet points, std::vector<unsigned char>& mark,
