@@ -130,9 +130,9 @@ void threaded_green_scatter(const LevelModel& m, IndexSet points, IndexSet tets,
 #endif
 }
 
-// Cauchy's per-tet forces on several threads (the weighted interface pass): one pass over
-// `tets` storing them, then a per-point gather over the incident tets (each weighted by
-// weight[t] when given), so the sum order per point is fixed whatever the thread count.
+// Several threads where the scatter does not serve (Cauchy's weighted interface pass, points
+// not ascending): one pass over `tets` storing the per-tet forces, then a per-point gather
+// over the incident tets (each weighted by weight[t] when given), in incidence order.
 void stored_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets,
                             const double* weight, const Vec3* u, const Vec3* v, Vec3* f,
                             ForceWorkspace& ws) {
@@ -167,7 +167,10 @@ void stored_pass_and_gather(const LevelModel& m, IndexSet points, IndexSet tets,
 void tet_pass(const LevelModel& m, IndexSet points, IndexSet tets, const double* weight,
               const Vec3* u, const Vec3* v, Vec3* f, ForceWorkspace& ws) {
   if (!use_threads(points.count)) return tet_pass_and_scatter(m, points, tets, weight, u, v, f, ws);
-  if (m.law.strain == StrainMeasure::GreenLagrange)
+  // The threads' point ranges need the points ascending (every caller's lists are: sorted
+  // active lists and their merges); otherwise the stored pass, slower, with the same bits.
+  if (m.law.strain == StrainMeasure::GreenLagrange &&
+      (!points.ids || std::is_sorted(points.ids, points.ids + points.count)))
     return threaded_green_scatter(m, points, tets, weight, u, v, f, ws);
   stored_pass_and_gather(m, points, tets, weight, u, v, f, ws);
 }

@@ -254,9 +254,22 @@ TEST(TetPass, OneAndTwoThreadsGiveTheSameBits) {
           weighted_internal_forces(m, IndexSet::of(points), IndexSet::of(tets), nullptr,
                                    u.data(), v.data(), out.data(), ws);
       }
+      // Points in any order (the threads' ranges need them ascending, or the stored pass).
+      std::vector<int> reversed(points.rbegin(), points.rend());
+      std::vector<Vec3> any_order(u.size(), untouched);
+      {
+        omp_set_num_threads(2);
+        set_parallel_threshold(1);
+        ForceWorkspace ws;
+        weighted_internal_forces(m, IndexSet::of(reversed), IndexSet::of(tets),
+                                 weighted ? weight.data() : nullptr, u.data(), v.data(),
+                                 any_order.data(), ws);
+      }
       set_parallel_threshold(saved);
       EXPECT_EQ(std::memcmp(f[0].data(), f[1].data(), f[0].size() * sizeof(Vec3)), 0)
           << (weighted ? "weighted " : "") << (s == StrainMeasure::Cauchy ? "Cauchy" : "Green");
+      EXPECT_EQ(std::memcmp(f[0].data(), any_order.data(), f[0].size() * sizeof(Vec3)), 0)
+          << "points in descending order";
       int moved = 0;
       for (int i = 0; i < m.num_points(); ++i) {
         const bool in_set = i % 3 == 0;
