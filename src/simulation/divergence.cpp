@@ -68,7 +68,12 @@ std::optional<std::string> DivergenceGuard::check(const HierarchicalSimulation& 
     if (in_force.level >= 0)
       os << " (point " << in_force.point << " of level " << in_force.level << ", "
          << place_of(sim, in_force.level, in_force.point) << ")";
-    os << "; raise time.substeps or use time.integrator: semi_implicit";
+    // What to change depends on which side of the estimate the step was.
+    if (sim.step() > in_force.dt)
+      os << "; the step is above it: raise time.substeps or omit it to have it computed";
+    else
+      os << "; the step is within it: a large deformation, inverted tets or a sudden load";
+    if (!sim.semi_implicit()) os << ", or use time.integrator: semi_implicit";
     return os.str();
   }
   return std::nullopt;

@@ -138,6 +138,8 @@ class HierarchicalSimulation {
   /// (ghost forces transferred under energy coupling). Not counted as work. For probes/tests.
   void compute_forces();
   Coupling coupling() const { return coupling_; }
+  /// Does the integrator filter velocities (eq. 5.1, time/semi_implicit_filter.hpp)?
+  bool semi_implicit() const { return semi_implicit_; }
   /// Force that fixed ghosts and fixed loaded points pass to the support instead of to active
   /// points (N), at the last force evaluation / load update: part of the support reaction.
   Vec3 held_by_support() const {

@@ -55,4 +55,23 @@ TEST(Divergence, EnergyMessageNamesTheStableStepInForce) {
   ASSERT_TRUE(why.has_value());
   EXPECT_NE(why->find("stable step estimate in force"), std::string::npos) << *why;
   EXPECT_NE(why->find("inside level 0's region"), std::string::npos) << *why;
+  // 1 µs is within the estimate: raising the substeps would not help, and the advice says so.
+  EXPECT_LT(sim.step(), sim.stable_step_in_force().dt);
+  EXPECT_NE(why->find("the step is within it"), std::string::npos) << *why;
+  EXPECT_EQ(why->find("raise time.substeps"), std::string::npos) << *why;
+  EXPECT_NE(why->find("or use time.integrator: semi_implicit"), std::string::npos) << *why;
+}
+
+TEST(Divergence, EnergyMessageAboveTheEstimateAndAlreadySemiImplicit) {
+  const auto meshes = mrsim::testing::jittered_box_levels({{3, 2, 2}}, 5, 0.2);
+  HierarchySetup hs = setup(1e-1);
+  hs.integrator = Integrator::SemiImplicit;
+  HierarchicalSimulation sim({&meshes[0]}, hs);
+  const DivergenceGuard guard = DivergenceGuard::for_level(sim.model(0), 1.0);
+  const auto why = guard.check(sim, 2 * guard.energy_bound);
+  ASSERT_TRUE(why.has_value());
+  EXPECT_GT(sim.step(), sim.stable_step_in_force().dt);
+  EXPECT_NE(why->find("the step is above it: raise time.substeps"), std::string::npos) << *why;
+  // It is semi-implicit already: no advice to switch to it.
+  EXPECT_EQ(why->find("semi_implicit"), std::string::npos) << *why;
 }
