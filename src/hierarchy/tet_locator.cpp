@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "hierarchy/closest_point.hpp"
@@ -132,17 +133,45 @@ int TetLocator::containing(const Vec3& p) const {
   return best;
 }
 
+// Tets overlap several cells: a query meets the same tet in each. The tets it has considered
+// are stamped (per thread: locate() runs in parallel loops) so that each is measured once.
+namespace {
+struct Stamps {
+  std::vector<std::uint32_t> of_tet;
+  std::uint32_t query = 0;
+  void next(std::size_t tets) {
+    if (of_tet.size() < tets) of_tet.resize(tets, 0);
+    if (++query == 0) {  // wrapped: every old stamp could collide
+      std::fill(of_tet.begin(), of_tet.end(), 0);
+      query = 1;
+    }
+  }
+  bool first_time(int t) {
+    if (of_tet[t] == query) return false;
+    of_tet[t] = query;
+    return true;
+  }
+};
+thread_local Stamps stamps;
+}  // namespace
+
 TetLocation TetLocator::locate(const Vec3& p) const {
   // Inside: the containing tet, without the distances of the cell's other tets.
   if (const int t = containing(p); t >= 0) return {t, barycentric(t, p), 0.0};
   TetLocation best;
   double best_key = 0;
+  stamps.next(mesh_.tets.size());
   const auto c = cell_of(p);
-  for (int s = cell_start_[cell_index(c[0], c[1], c[2])];
-       s < cell_start_[cell_index(c[0], c[1], c[2]) + 1]; ++s)
-    consider(cell_tets_[s], p, best, best_key);
+  auto visit = [&](int cell) {
+    for (int s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s)
+      if (stamps.first_time(cell_tets_[s])) consider(cell_tets_[s], p, best, best_key);
+  };
+  visit(cell_index(c[0], c[1], c[2]));
   if (best.tet >= 0 && best.distance == 0) return best;
-  // Outside every tet of the cell: search rings of cells until no closer tet can exist.
+  // Outside every tet of the cell: search rings of cells until no closer tet can exist. A cell
+  // farther than the best so far is skipped: a tet all of whose cells are skipped has its
+  // bounding box, hence itself, farther too (consider() would skip it), so the result is the
+  // same.
   const int max_ring = std::max({dims_[0], dims_[1], dims_[2]});
   for (int r = 1; r <= max_ring; ++r) {
     for (int k = c[2] - r; k <= c[2] + r; ++k)
@@ -150,9 +179,12 @@ TetLocation TetLocator::locate(const Vec3& p) const {
         for (int i = c[0] - r; i <= c[0] + r; ++i) {
           if (std::max({std::abs(i - c[0]), std::abs(j - c[1]), std::abs(k - c[2])}) != r) continue;
           if (i < 0 || j < 0 || k < 0 || i >= dims_[0] || j >= dims_[1] || k >= dims_[2]) continue;
-          const int cell = cell_index(i, j, k);
-          for (int s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s)
-            consider(cell_tets_[s], p, best, best_key);
+          if (best.tet >= 0) {
+            const Vec3 cell_lo = lo_ + h_ * Vec3(i, j, k);
+            const Vec3 gap = (cell_lo - p).cwiseMax(p - (cell_lo + Vec3::Constant(h_))).cwiseMax(0.0);
+            if (gap.norm() > std::max(best_key, 0.0) * (1 + 1e-9) + 1e-300) continue;
+          }
+          visit(cell_index(i, j, k));
         }
     // Every tet not yet seen lies in cells at least r·h away from p's cell.
     if (best.tet >= 0 && best.distance <= r * h_) break;

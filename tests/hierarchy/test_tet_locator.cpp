@@ -107,3 +107,54 @@ TEST(TetLocator, ContainingIsTheBestHoldingTetAndMinusOneOutside) {
   EXPECT_GT(inside, 2000);
   EXPECT_GT(outside, 500);
 }
+
+// Outside the mesh, locate() searches rings of grid cells, skips cells farther than its best so
+// far and measures each tet once however many cells it overlaps; none of that may change the
+// answer: the nearest tet by the same distance, ties to the lowest index, bit for bit. The box
+// has a notch cut into its top, as independent meshes of one object have dents in each other's
+// hulls: a point in the notch lies in grid cells that hold no tet, so the ring search decides.
+TEST(TetLocator, OutsideAnswerIsTheNearestTetOfAllTiesToTheLowestIndex) {
+  TetMesh m = jittered_box();
+  std::vector<Tet> kept;
+  for (const Tet& t : m.tets) {
+    Vec3 c = Vec3::Zero();
+    for (int v : t) c += m.points[v] / 4;
+    const bool notch = c.x() > 0.25 && c.x() < 0.75 && c.y() > 0.1 && c.y() < 0.5 && c.z() > 0.1;
+    if (!notch) kept.push_back(t);
+  }
+  m.tets = kept;
+  const TetLocator loc(m);
+  static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  auto nearest = [&](const Vec3& p, double& distance) {
+    int best = -1;
+    for (int t = 0; t < static_cast<int>(m.tets.size()); ++t) {
+      double d = std::numeric_limits<double>::infinity();
+      for (const auto& f : kFaces)
+        d = std::min(d, (p - closest_point_on_triangle(p, m.points[m.tets[t][f[0]]],
+                                                       m.points[m.tets[t][f[1]]],
+                                                       m.points[m.tets[t][f[2]]]))
+                            .norm());
+      if (best < 0 || d < distance) best = t, distance = d;
+    }
+    return best;
+  };
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> x(0.2, 0.8), y(0.05, 0.55), z(0.05, 0.45),
+      u(-0.2, 1.2);
+  int in_notch = 0, checked = 0;
+  for (int k = 0; k < 1500; ++k) {
+    // Two thirds in and above the notch, the rest anywhere around the box.
+    const Vec3 p = k % 3 ? Vec3(x(rng), y(rng), z(rng))
+                         : Vec3(u(rng), 0.6 * u(rng), 0.4 * u(rng));
+    if (loc.containing(p) >= 0) continue;
+    double ref = 0;
+    const int t = nearest(p, ref);
+    const TetLocation l = loc.locate(p);
+    ASSERT_EQ(l.tet, t) << p.transpose();
+    EXPECT_EQ(l.distance, ref) << p.transpose();
+    ++checked;
+    in_notch += k % 3 != 0;
+  }
+  EXPECT_GT(in_notch, 600);
+  EXPECT_GT(checked, 900);
+}
