@@ -2,8 +2,10 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "physics/stable_step_bound.hpp"
 
@@ -19,20 +21,41 @@ struct Term {
 };
 
 // y = M^-1/2 (Σ terms) M^-1/2 x, one gather per point (s = 1/√m, 0 where a point has no mass).
-void apply(const PointAdjacency& adj, const std::vector<Term>& terms, const Eigen::VectorXd& s,
-           const Eigen::VectorXd& x, Eigen::VectorXd& y) {
+// The terms (at most two: stiffness and damping) share one pass over each point's neighbours,
+// each with its own sum: the same operations in the same order as one pass per term.
+constexpr std::size_t kMaxTerms = 2;
+
+template <std::size_t N>
+void apply_terms(const PointAdjacency& adj, const std::vector<Term>& terms,
+                 const Eigen::VectorXd& s, const Eigen::VectorXd& x, Eigen::VectorXd& y) {
   const int n = adj.num_points();
+  std::array<const Mat3*, N> edge;
+  std::array<double, N> own, coefficient;
+  for (std::size_t k = 0; k < N; ++k) {
+    edge[k] = terms[k].edge->data();
+    own[k] = terms[k].own;
+    coefficient[k] = terms[k].coefficient;
+  }
   for (int i = 0; i < n; ++i) {
     const Vec3 xi = s[i] * x.segment<3>(3 * i);
-    Vec3 yi = Vec3::Zero();
-    for (const Term& t : terms) {
-      Vec3 sum = Vec3::Zero();
-      for (int e = adj.nbr_start[i]; e < adj.nbr_start[i + 1]; ++e)
-        sum.noalias() += (*t.edge)[e] * (s[adj.nbr[e]] * x.segment<3>(3 * adj.nbr[e]) + t.own * xi);
-      yi += t.coefficient * sum;
+    std::array<Vec3, N> sum;
+    for (std::size_t k = 0; k < N; ++k) sum[k].setZero();
+    for (int e = adj.nbr_start[i]; e < adj.nbr_start[i + 1]; ++e) {
+      const Vec3 xj = s[adj.nbr[e]] * x.segment<3>(3 * adj.nbr[e]);
+      for (std::size_t k = 0; k < N; ++k) sum[k].noalias() += edge[k][e] * (xj + own[k] * xi);
     }
+    Vec3 yi = Vec3::Zero();
+    for (std::size_t k = 0; k < N; ++k) yi += coefficient[k] * sum[k];
     y.segment<3>(3 * i) = s[i] * yi;
   }
+}
+
+void apply(const PointAdjacency& adj, const std::vector<Term>& terms, const Eigen::VectorXd& s,
+           const Eigen::VectorXd& x, Eigen::VectorXd& y) {
+  if (terms.size() == 1)
+    apply_terms<1>(adj, terms, s, x, y);
+  else
+    apply_terms<2>(adj, terms, s, x, y);
 }
 
 // Largest Ritz value of the tridiagonal (alpha, beta) and its residual bound |β_k s_k|.
@@ -58,6 +81,7 @@ double lanczos_top(const PointAdjacency& adj, const std::vector<Term>& terms,
                    const std::vector<double>& mass, double tolerance, int max_iterations,
                    double above = std::numeric_limits<double>::infinity()) {
   const int n = adj.num_points(), dofs = 3 * n;
+  if (terms.size() > kMaxTerms) throw std::logic_error("lanczos_top: more terms than apply() holds");
   Eigen::VectorXd s(n);
   for (int i = 0; i < n; ++i) s[i] = mass[i] > 0 ? 1 / std::sqrt(mass[i]) : 0;
   // A fixed start vector with every component non-zero and no symmetry of the mesh.
