@@ -77,17 +77,24 @@ std::pair<double, double> top_ritz(const std::vector<double>& alpha,
 // soon as the largest Ritz value exceeds it and returns that value: the largest eigenvalue of the
 // growing tridiagonal never decreases (Cauchy interlacing), so the full run would have returned
 // more than `above` too.
+// A fixed start vector with every component non-zero and no symmetry of the mesh, normalised.
+Eigen::VectorXd start_vector(int dofs) {
+  Eigen::VectorXd q(dofs);
+  for (int k = 0; k < dofs; ++k) q[k] = 1.0 + 0.5 * std::sin(0.7 * k + 0.3 * (k % 7));
+  return q / q.norm();
+}
+
+// `start`: start_vector(3 × points), when the caller runs several Lanczos on one level.
 double lanczos_top(const PointAdjacency& adj, const std::vector<Term>& terms,
                    const std::vector<double>& mass, double tolerance, int max_iterations,
-                   double above = std::numeric_limits<double>::infinity()) {
+                   double above = std::numeric_limits<double>::infinity(),
+                   const Eigen::VectorXd* start = nullptr) {
   const int n = adj.num_points(), dofs = 3 * n;
   if (terms.size() > kMaxTerms) throw std::logic_error("lanczos_top: more terms than apply() holds");
   Eigen::VectorXd s(n);
   for (int i = 0; i < n; ++i) s[i] = mass[i] > 0 ? 1 / std::sqrt(mass[i]) : 0;
-  // A fixed start vector with every component non-zero and no symmetry of the mesh.
-  Eigen::VectorXd q(dofs), q_prev = Eigen::VectorXd::Zero(dofs), w(dofs);
-  for (int k = 0; k < dofs; ++k) q[k] = 1.0 + 0.5 * std::sin(0.7 * k + 0.3 * (k % 7));
-  q /= q.norm();
+  Eigen::VectorXd q = start ? *start : start_vector(dofs), q_prev = Eigen::VectorXd::Zero(dofs),
+                  w(dofs);
   std::vector<double> alpha, beta;
   double estimate = 0;
   for (int it = 0; it < std::min(max_iterations, dofs); ++it) {
@@ -140,8 +147,10 @@ double combined_step_limit(const PointAdjacency& adj, const std::vector<Mat3>& K
   };
   if (adj.num_points() == 0 || C.empty() || damping <= 0) return apart(stiffness, 0.0);
   const double own = filtered ? 1.0 : -1.0;
+  const Eigen::VectorXd start = start_vector(3 * adj.num_points());  // one for every trial
   auto stable = [&](double dt) {
-    return lanczos_top(adj, {{&K, own, dt * dt}, {&C, -1.0, 2 * dt}}, mass, 1e-3, 300, 4.0) <= 4.0;
+    return lanczos_top(adj, {{&K, own, dt * dt}, {&C, -1.0, 2 * dt}}, mass, 1e-3, 300, 4.0,
+                       &start) <= 4.0;
   };
   double lo = apart(stiffness, damping), hi = 2 * lo;
   if (!std::isfinite(lo)) return inf;
