@@ -180,8 +180,8 @@ TetLocation TetLocator::locate(const Vec3& p) const {
           if (std::max({std::abs(i - c[0]), std::abs(j - c[1]), std::abs(k - c[2])}) != r) continue;
           if (i < 0 || j < 0 || k < 0 || i >= dims_[0] || j >= dims_[1] || k >= dims_[2]) continue;
           if (best.tet >= 0) {
-            const Vec3 cell_lo = lo_ + h_ * Vec3(i, j, k);
-            const Vec3 gap = (cell_lo - p).cwiseMax(p - (cell_lo + Vec3::Constant(h_))).cwiseMax(0.0);
+            const Vec3 cell_lo = lo_ + h_ * Vec3(i, j, k), cell_hi = cell_lo + Vec3::Constant(h_);
+            const Vec3 gap = (cell_lo - p).cwiseMax(p - cell_hi).cwiseMax(0.0);
             if (gap.norm() > std::max(best_key, 0.0) * (1 + 1e-9) + 1e-300) continue;
           }
           visit(cell_index(i, j, k));

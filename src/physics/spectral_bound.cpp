@@ -72,11 +72,6 @@ std::pair<double, double> top_ritz(const std::vector<double>& alpha,
   return {es.eigenvalues()[top], std::abs(beta[k - 1] * es.eigenvectors()(k - 1, top))};
 }
 
-// Lanczos for the largest algebraic eigenvalue of M^-1/2 A M^-1/2 (A of apply()), from a fixed
-// start vector; the Ritz value plus its residual bound (errs upwards). With `above`, it stops as
-// soon as the largest Ritz value exceeds it and returns that value: the largest eigenvalue of the
-// growing tridiagonal never decreases (Cauchy interlacing), so the full run would have returned
-// more than `above` too.
 // A fixed start vector with every component non-zero and no symmetry of the mesh, normalised.
 Eigen::VectorXd start_vector(int dofs) {
   Eigen::VectorXd q(dofs);
@@ -84,13 +79,18 @@ Eigen::VectorXd start_vector(int dofs) {
   return q / q.norm();
 }
 
-// `start`: start_vector(3 × points), when the caller runs several Lanczos on one level.
+// Lanczos for the largest algebraic eigenvalue of M^-1/2 A M^-1/2 (A of apply()), from a fixed
+// start vector; the Ritz value plus its residual bound (errs upwards). With `above`, it stops as
+// soon as the largest Ritz value exceeds it and returns that value: the largest eigenvalue of the
+// growing tridiagonal never decreases (Cauchy interlacing), so the full run would have returned
+// more than `above` too. `start`: start_vector(3 × points), when the caller runs several Lanczos
+// runs on one level.
 double lanczos_top(const PointAdjacency& adj, const std::vector<Term>& terms,
                    const std::vector<double>& mass, double tolerance, int max_iterations,
                    double above = std::numeric_limits<double>::infinity(),
                    const Eigen::VectorXd* start = nullptr) {
   const int n = adj.num_points(), dofs = 3 * n;
-  if (terms.size() > kMaxTerms) throw std::logic_error("lanczos_top: more terms than apply() holds");
+  if (terms.size() > kMaxTerms) throw std::logic_error("lanczos_top: more terms than apply() sums");
   Eigen::VectorXd s(n);
   for (int i = 0; i < n; ++i) s[i] = mass[i] > 0 ? 1 / std::sqrt(mass[i]) : 0;
   Eigen::VectorXd q = start ? *start : start_vector(dofs), q_prev = Eigen::VectorXd::Zero(dofs),
