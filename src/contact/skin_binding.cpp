@@ -23,10 +23,16 @@ Bary snapped(Bary b) {
 }  // namespace
 
 SkinBinding bind_skin(const Skin& skin, const std::vector<const TetMesh*>& levels) {
+  std::vector<TetLocator> locators;
+  locators.reserve(levels.size());
+  for (const TetMesh* mesh : levels) locators.emplace_back(*mesh);
+  return bind_skin(skin, locators);
+}
+
+SkinBinding bind_skin(const Skin& skin, const std::vector<TetLocator>& levels) {
   SkinBinding b;
   const std::size_t n = skin.rest.size();
-  for (const TetMesh* mesh : levels) {
-    const TetLocator locator(*mesh);
+  for (const TetLocator& locator : levels) {
     std::vector<int> tet(n);
     std::vector<Bary> bary(n);
     for (std::size_t s = 0; s < n; ++s) {

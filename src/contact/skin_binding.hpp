@@ -7,6 +7,7 @@
 
 #include "contact/skin.hpp"
 #include "hierarchy/level_links.hpp"
+#include "hierarchy/tet_locator.hpp"
 
 namespace mrsim {
 
@@ -16,5 +17,7 @@ struct SkinBinding {
 };
 
 SkinBinding bind_skin(const Skin& skin, const std::vector<const TetMesh*>& levels);
+/// The same with each level's locator given (shared with the level links).
+SkinBinding bind_skin(const Skin& skin, const std::vector<TetLocator>& levels);
 
 }  // namespace mrsim

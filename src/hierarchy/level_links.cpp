@@ -91,10 +91,15 @@ void build_dependents(LevelLinks& coarse, const LevelLinks& fine_links,
 }  // namespace
 
 std::vector<LevelLinks> build_level_links(const std::vector<HierarchyLevel>& levels) {
-  const size_t L = levels.size();
   std::vector<TetLocator> locators;
-  locators.reserve(L);
+  locators.reserve(levels.size());
   for (const auto& lv : levels) locators.emplace_back(*lv.mesh);
+  return build_level_links(levels, locators);
+}
+
+std::vector<LevelLinks> build_level_links(const std::vector<HierarchyLevel>& levels,
+                                          const std::vector<TetLocator>& locators) {
+  const size_t L = levels.size();
   std::vector<LevelLinks> links(L);
   for (size_t l = 0; l < L; ++l) {
     const size_t n = levels[l].mesh->points.size();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hierarchy/csr_lists.hpp"
+#include "hierarchy/tet_locator.hpp"
 #include "physics/point_adjacency.hpp"
 
 namespace mrsim {
@@ -38,5 +39,9 @@ struct HierarchyLevel {
 
 /// Links for every level; O(N log N)-like with a spatial grid per level.
 std::vector<LevelLinks> build_level_links(const std::vector<HierarchyLevel>& levels);
+/// The same with each level's locator given (`locators[l]` over `levels[l].mesh`), when the
+/// caller locates other points in the levels too (the skin binding).
+std::vector<LevelLinks> build_level_links(const std::vector<HierarchyLevel>& levels,
+                                          const std::vector<TetLocator>& locators);
 
 }  // namespace mrsim

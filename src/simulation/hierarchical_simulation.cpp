@@ -31,7 +31,11 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
           build_level_model(*meshes[l], law, is_semi_implicit(setup.integrator))));
     levels.push_back({meshes[l], &models_[l]->adj});
   }
-  hierarchy_ = std::make_unique<Hierarchy>(levels, build_level_links(levels));
+  // One locator per level, for the level links and the skin binding.
+  std::vector<TetLocator> locators;
+  locators.reserve(L);
+  for (int l = 0; l < L; ++l) locators.emplace_back(*meshes[l]);
+  hierarchy_ = std::make_unique<Hierarchy>(levels, build_level_links(levels, locators));
   lists_ = std::make_unique<StatusLists>(*hierarchy_);
   states_.resize(L);
   fixed_.resize(L);
@@ -80,7 +84,7 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   load_factors_.assign(loads_.size(), 0.0);
   if (!setup.tools.empty()) {
     Skin skin = setup.skin ? *setup.skin : boundary_skin(*meshes.back());
-    SkinBinding binding = bind_skin(skin, meshes);
+    SkinBinding binding = bind_skin(skin, locators);
     contact_ = std::make_unique<SkinContact>(std::move(skin), std::move(binding), setup.tools,
                                              setup.law.lambda + 2.0 * setup.law.mu);
   }
