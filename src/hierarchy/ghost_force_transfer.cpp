@@ -29,9 +29,22 @@ void transfer_ghost_forces(const Hierarchy& h, const GhostSelection& ghosts, std
            [&](int l) -> const std::vector<int>& { return *ghosts.sub[l]; }, f);
 }
 
+// The same sums as to_tets(), read from one record per ghost.
+void to_stencils(const std::vector<int>& ghosts, const std::vector<GhostStencil>& stencils,
+                 const Vec3* ghost_force, Vec3* source_force) {
+  for (std::size_t k = 0; k < ghosts.size(); ++k) {
+    const GhostStencil& s = stencils[k];
+    const Vec3 g = ghost_force[ghosts[k]];
+    for (int a = 0; a < 4; ++a) source_force[s.source[a]] += s.weight[a] * g;
+  }
+}
+
 void transfer_ghost_forces(const Hierarchy& h, const StatusLists& lists, std::vector<Vec3*>& f) {
-  transfer(h, [&](int l) -> const std::vector<int>& { return lists.ghost_iface(l); },
-           [&](int l) -> const std::vector<int>& { return lists.ghost_sub(l); }, f);
+  const int L = h.num_levels();
+  for (int l = L - 1; l >= 1; --l)
+    to_stencils(lists.ghost_iface(l), lists.iface_stencils(l), f[l], f[l - 1]);
+  for (int l = 0; l + 1 < L; ++l)
+    to_stencils(lists.ghost_sub(l), lists.sub_stencils(l), f[l], f[l + 1]);
 }
 
 }  // namespace mrsim
