@@ -1,0 +1,79 @@
+// The broad phase (SkinContact::near_tools, once per display frame): the skin vertices within
+// the tool's reach of its path over the frame. Most of the skin is far from the tool and is
+// passed on the path's bounding box alone; that shortcut may not change which vertices are found.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "../hierarchy/hierarchy_fixture.hpp"
+#include "contact/skin_contact.hpp"
+
+namespace mrsim {
+namespace {
+
+double distance_to_segment(const Vec3& x, const Vec3& a, const Vec3& b) {
+  const Vec3 d = b - a;
+  const double len2 = d.squaredNorm();
+  const double s = len2 > 0 ? std::clamp((x - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+  return (x - (a + s * d)).norm();
+}
+
+TEST(BroadPhase, FindsEveryVertexWithinReachOfTheSampledPathAndNoOther) {
+  const testing::ThreeLevels f;
+  Hierarchy h = f.make();
+  const Skin skin = boundary_skin(f.meshes.back());
+  std::vector<const TetMesh*> meshes;
+  for (const TetMesh& m : f.meshes) meshes.push_back(&m);
+  Tool tool;
+  tool.shape.kind = ToolShapeKind::Sphere;
+  tool.shape.radius = 0.006;
+  // A curved pass over the top face (z = 0.04) of the 0.1 × 0.06 × 0.04 m box, and beyond it.
+  tool.trajectory = ToolTrajectory({{0.0, Vec3(-0.01, 0.01, 0.05)},
+                                    {0.5, Vec3(0.05, 0.05, 0.043)},
+                                    {1.0, Vec3(0.12, 0.02, 0.06)}},
+                                   Interpolation::Smooth, "tool");
+  SkinContact contact(skin, bind_skin(skin, meshes), {tool}, 1e5);
+  std::vector<std::vector<std::uint8_t>> free(f.meshes.size());
+  std::vector<const std::vector<std::uint8_t>*> free_point;
+  for (std::size_t l = 0; l < f.meshes.size(); ++l) {
+    free[l].assign(f.meshes[l].points.size(), 1);
+    free_point.push_back(&free[l]);
+  }
+  contact.remap(h, free_point);
+  std::vector<std::vector<Vec3>> zero(f.meshes.size());
+  std::vector<LevelFields> fields;
+  for (std::size_t l = 0; l < f.meshes.size(); ++l) {
+    zero[l].assign(f.meshes[l].points.size(), Vec3::Zero());
+    fields.push_back({zero[l].data(), zero[l].data()});
+  }
+  int near_total = 0;
+  for (int frame = 0; frame < 10; ++frame) {
+    const double t0 = 0.1 * frame, t1 = t0 + 0.1;
+    std::vector<std::vector<int>> found;
+    contact.near_tools(t0, t1, fields, found);
+    // The rule in full: 16 poses over the frame, reach = 1.05 × the bounding radius (the skin
+    // is at rest), plus the longest chord between two poses.
+    constexpr int kSamples = 16;
+    std::vector<Vec3> path;
+    for (int i = 0; i <= kSamples; ++i)
+      path.push_back(tool.trajectory.pose(t0 + (t1 - t0) * i / kSamples).position);
+    double chord = 0;
+    for (int i = 1; i <= kSamples; ++i) chord = std::max(chord, (path[i] - path[i - 1]).norm());
+    const double reach = 1.05 * tool.shape.radius + chord;
+    std::vector<int> expected;
+    for (int s = 0; s < static_cast<int>(skin.rest.size()); ++s) {
+      double d = (skin.rest[s] - path[0]).norm();
+      for (int i = 1; i <= kSamples; ++i)
+        d = std::min(d, distance_to_segment(skin.rest[s], path[i - 1], path[i]));
+      if (d <= reach) expected.push_back(s);
+    }
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0], expected) << "frame " << frame;
+    near_total += static_cast<int>(expected.size());
+  }
+  EXPECT_GT(near_total, 20);  // the tool does come near the skin
+}
+
+}  // namespace
+}  // namespace mrsim
