@@ -9,16 +9,12 @@ Vec3 interpolate(const Vec3* values, const Tet& tet, const Bary& b) {
 
 namespace {
 
-// The same sums as interpolate(), read from one record per ghost.
-void from_stencils(const std::vector<int>& points, const std::vector<GhostStencil>& stencils,
-                   const LevelFields& source, LevelFields& target) {
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const GhostStencil& s = stencils[k];
-    const Bary& b = s.weight;
-    target.u[points[k]] = b[0] * source.u[s.source[0]] + b[1] * source.u[s.source[1]] +
-                          b[2] * source.u[s.source[2]] + b[3] * source.u[s.source[3]];
-    target.v[points[k]] = b[0] * source.v[s.source[0]] + b[1] * source.v[s.source[1]] +
-                          b[2] * source.v[s.source[2]] + b[3] * source.v[s.source[3]];
+// Each ghost's sources straight from the links (Embedding::source), not through its tet.
+void from_tets(const std::vector<int>& points, const Embedding& emb, const LevelFields& source,
+               LevelFields& target) {
+  for (int p : points) {
+    target.u[p] = interpolate(source.u, emb.source[p], emb.bary[p]);
+    target.v[p] = interpolate(source.v, emb.source[p], emb.bary[p]);
   }
 }
 
@@ -27,9 +23,9 @@ void from_stencils(const std::vector<int>& points, const std::vector<GhostStenci
 void update_ghosts(const Hierarchy& h, const StatusLists& lists, std::vector<LevelFields>& fields) {
   const int L = h.num_levels();
   for (int l = L - 2; l >= 0; --l)
-    from_stencils(lists.ghost_sub(l), lists.sub_stencils(l), fields[l + 1], fields[l]);
+    from_tets(lists.ghost_sub(l), h.links(l).child_tet, fields[l + 1], fields[l]);
   for (int l = 1; l < L; ++l)
-    from_stencils(lists.ghost_iface(l), lists.iface_stencils(l), fields[l - 1], fields[l]);
+    from_tets(lists.ghost_iface(l), h.links(l).parent_tet, fields[l - 1], fields[l]);
 }
 
 void interpolate_inactive(const Hierarchy& h, std::vector<LevelFields>& fields) {

@@ -11,16 +11,19 @@ namespace mrsim {
 
 namespace {
 
-Embedding embed(const TetMesh& points_of, const TetLocator& into) {
+Embedding embed(const TetMesh& points_of, const TetMesh& mesh, const TetLocator& into) {
   Embedding e;
   const size_t n = points_of.points.size();
   e.tet.resize(n);
   e.bary.resize(n);
+  e.source.resize(n);
 #pragma omp parallel for schedule(dynamic, 256)
   for (size_t i = 0; i < n; ++i) {
     const TetLocation l = into.locate(points_of.points[i]);
     e.tet[i] = l.tet;
     e.bary[i] = l.bary;
+    const Tet& t = mesh.tets[l.tet];
+    e.source[i] = {t[0], t[1], t[2], t[3]};
   }
   return e;
 }
@@ -29,6 +32,7 @@ Embedding none(size_t n) {
   Embedding e;
   e.tet.assign(n, -1);
   e.bary.assign(n, Bary{});
+  e.source.assign(n, {-1, -1, -1, -1});
   return e;
 }
 
@@ -103,8 +107,10 @@ std::vector<LevelLinks> build_level_links(const std::vector<HierarchyLevel>& lev
   std::vector<LevelLinks> links(L);
   for (size_t l = 0; l < L; ++l) {
     const size_t n = levels[l].mesh->points.size();
-    links[l].parent_tet = l > 0 ? embed(*levels[l].mesh, locators[l - 1]) : none(n);
-    links[l].child_tet = l + 1 < L ? embed(*levels[l].mesh, locators[l + 1]) : none(n);
+    links[l].parent_tet =
+        l > 0 ? embed(*levels[l].mesh, *levels[l - 1].mesh, locators[l - 1]) : none(n);
+    links[l].child_tet =
+        l + 1 < L ? embed(*levels[l].mesh, *levels[l + 1].mesh, locators[l + 1]) : none(n);
     links[l].parent.assign(n, -1);
     if (l > 0)
       for (size_t q = 0; q < n; ++q)

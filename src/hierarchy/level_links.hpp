@@ -19,6 +19,9 @@ using Bary = std::array<double, 4>;
 struct Embedding {
   std::vector<int> tet;    // -1 when there is no such level
   std::vector<Bary> bary;  // signed when the point is outside that mesh
+  // The four vertices of `tet` (-1 without one): the ghost refresh and the force transfer of
+  // every step read a point's sources here rather than through the tet.
+  std::vector<std::array<int, 4>> source;
 };
 
 struct LevelLinks {

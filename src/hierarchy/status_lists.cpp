@@ -15,10 +15,7 @@ int StatusLists::list_of(NodeState s) {
 }
 
 StatusLists::StatusLists(const Hierarchy& h)
-    : lists_(h.num_levels()),
-      filed_(h.num_levels()),
-      slot_(h.num_levels()),
-      stencils_(h.num_levels()) {
+    : lists_(h.num_levels()), filed_(h.num_levels()), slot_(h.num_levels()) {
   for (int l = 0; l < h.num_levels(); ++l) {
     filed_[l].assign(h.num_points(l), -1);
     slot_[l].assign(h.num_points(l), -1);
@@ -26,26 +23,6 @@ StatusLists::StatusLists(const Hierarchy& h)
       const int which = list_of(h.state(l, p));
       if (which >= 0) insert(l, p, which);
     }
-    build_stencils(h, l, kGhostSub);
-    build_stencils(h, l, kGhostIface);
-  }
-}
-
-// A subdivided ghost reads its child tet (level + 1), an interface ghost its parent tet
-// (level - 1). O(ghosts of the list).
-void StatusLists::build_stencils(const Hierarchy& h, int level, int list) {
-  const bool sub = list == kGhostSub;
-  const std::vector<int>& ghosts = lists_[level][list];
-  std::vector<GhostStencil>& out = stencils_[level][sub ? 0 : 1];
-  out.resize(ghosts.size());
-  if (ghosts.empty()) return;
-  const Embedding& emb = sub ? h.links(level).child_tet : h.links(level).parent_tet;
-  const TetMesh& source = *h.level(sub ? level + 1 : level - 1).mesh;
-  for (std::size_t k = 0; k < ghosts.size(); ++k) {
-    const int g = ghosts[k];
-    const Tet& t = source.tets[emb.tet[g]];
-    out[k].source = {t[0], t[1], t[2], t[3]};
-    out[k].weight = emb.bary[g];
   }
 }
 
@@ -89,10 +66,7 @@ void StatusLists::update(const Hierarchy& h, const std::vector<std::pair<int, in
   }
   for (size_t l = 0; l < lists_.size(); ++l)
     for (int k = 0; k < 3; ++k)
-      if (dirty[l][k]) {
-        sort_list(static_cast<int>(l), k);
-        if (k != kActive) build_stencils(h, static_cast<int>(l), k);
-      }
+      if (dirty[l][k]) sort_list(static_cast<int>(l), k);
 }
 
 std::size_t StatusLists::total(int which) const {
