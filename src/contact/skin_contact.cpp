@@ -90,7 +90,7 @@ void SkinContact::near_tools(double t0, double t1, const std::vector<LevelFields
   std::vector<Vec3> x(n);
   for (int s = 0; s < n; ++s) {
     Vec3 u, v;
-    map_.values(s, fields, u, v);
+    map_.interpolate(s, fields, u, v);
     x[s] = skin_.rest[s] + u;
     speed = std::max(speed, v.norm());
   }
@@ -167,8 +167,7 @@ Vec3 SkinContact::apply(double t, const std::vector<LevelFields>& fields,
       if (vertex_force_[s].isZero()) forced_.push_back(s);
       vertex_force_[s] += f;
       tool_force_[k] -= f;
-      for (const ActiveTerm* a = map_.begin(s); a != map_.end(s); ++a)
-        touch(external, *a, f, support);
+      for (const ActiveTerm& a : map_.row(s)) touch(external, a, f, support);
     }
   }
   return support;

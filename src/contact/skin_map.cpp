@@ -20,47 +20,68 @@ int moving_level(const Hierarchy& h, const SkinBinding& b, int s) {
 void SkinMap::build(const Hierarchy& h, const SkinBinding& b,
                     const std::vector<const std::vector<std::uint8_t>*>& free_point) {
   const int n = static_cast<int>(b.tet[0].size());
-  rows_.clear();  // the statuses changed since the last build
+  h_ = &h;
+  free_ = free_point;
   level_.resize(n);
-  start_.assign(1, 0);
-  terms_.clear();
+  source_.resize(n);
+  weight_.resize(n);
   for (int s = 0; s < n; ++s) {
     const int l = moving_level(h, b, s);
     level_[s] = l;
-    const Tet& t = h.level(l).mesh->tets[b.tet[l][s]];
+    source_[s] = h.level(l).mesh->tets[b.tet[l][s]];
+    weight_[s] = b.bary[l][s];
+  }
+  // Forget the rows of the last build (the statuses changed since).
+  if (static_cast<int>(begin_.size()) != n) {
+    begin_.assign(n, -1);
+    end_.assign(n, -1);
+  } else {
+    for (int s : built_) begin_[s] = -1;
+  }
+  built_.clear();
+  terms_.clear();
+  rows_.clear();
+}
+
+void SkinMap::interpolate(int s, const std::vector<LevelFields>& fields, Vec3& u, Vec3& v) const {
+  const LevelFields& f = fields[level_[s]];
+  u = Vec3::Zero();
+  v = Vec3::Zero();
+  for (int k = 0; k < 4; ++k)
+    if (weight_[s][k] != 0) {  // a vertex of weight 0 may be inactive: not read
+      u += weight_[s][k] * f.u[source_[s][k]];
+      v += weight_[s][k] * f.v[source_[s][k]];
+    }
+}
+
+std::span<const ActiveTerm> SkinMap::row(int s) const {
+  if (begin_[s] < 0) {
+    const int l = level_[s];
     MergedRows::Span rows[4];
     double weights[4];
     int count = 0;
     for (int k = 0; k < 4; ++k)
-      if (b.bary[l][s][k] != 0) {
-        rows[count] = rows_.row(h, free_point, l, t[k]);
-        weights[count++] = b.bary[l][s][k];
+      if (weight_[s][k] != 0) {
+        rows[count] = rows_.row(*h_, free_, l, source_[s][k]);
+        weights[count++] = weight_[s][k];
       }
-    rows_.combine(rows, weights, count, row_);
-    terms_.insert(terms_.end(), row_.begin(), row_.end());
-    start_.push_back(static_cast<int>(terms_.size()));
+    rows_.combine(rows, weights, count, scratch_);
+    begin_[s] = static_cast<int>(terms_.size());
+    terms_.insert(terms_.end(), scratch_.begin(), scratch_.end());
+    end_[s] = static_cast<int>(terms_.size());
+    built_.push_back(s);
   }
+  return {terms_.data() + begin_[s], terms_.data() + end_[s]};
 }
 
 Vec3 SkinMap::value(int s, const std::vector<LevelFields>& fields, bool velocity) const {
   Vec3 x = Vec3::Zero();
-  for (const ActiveTerm* t = begin(s); t != end(s); ++t)
-    if (t->level >= 0) {
-      const LevelFields& f = fields[t->level];
-      x += t->weight * (velocity ? f.v[t->point] : f.u[t->point]);
+  for (const ActiveTerm& t : row(s))
+    if (t.level >= 0) {
+      const LevelFields& f = fields[t.level];
+      x += t.weight * (velocity ? f.v[t.point] : f.u[t.point]);
     }
   return x;
-}
-
-void SkinMap::values(int s, const std::vector<LevelFields>& fields, Vec3& u, Vec3& v) const {
-  u = Vec3::Zero();
-  v = Vec3::Zero();
-  for (const ActiveTerm* t = begin(s); t != end(s); ++t)
-    if (t->level >= 0) {
-      const LevelFields& f = fields[t->level];
-      u += t->weight * f.u[t->point];
-      v += t->weight * f.v[t->point];
-    }
 }
 
 }  // namespace mrsim

@@ -286,8 +286,8 @@ void HierarchicalSimulation::contact_region(double lookahead,
   contact_->near_tools(time_, time_ + lookahead, fields_, near);
   for (const std::vector<int>& vertices : near)
     for (int s : vertices)
-      for (const ActiveTerm* t = contact_->map().begin(s); t != contact_->map().end(s); ++t)
-        if (t->level >= 0) out.emplace_back(t->level, t->point);
+      for (const ActiveTerm& t : contact_->map().row(s))
+        if (t.level >= 0) out.emplace_back(t.level, t.point);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
 }
@@ -305,7 +305,7 @@ void HierarchicalSimulation::skin_state(std::vector<Vec3>& u, std::vector<Vec3>&
   u.resize(n);
   v.resize(n);
   for (int s = 0; s < n; ++s) {
-    contact_->map().values(s, fields_, u[s], v[s]);
+    contact_->map().interpolate(s, fields_, u[s], v[s]);
   }
 }
 
@@ -537,7 +537,8 @@ void HierarchicalSimulation::update_stable_steps() {
     add_contact_bounds(
         contact_->penalty(), near_,
         [&](int s, std::vector<ActiveTerm>& row) {
-          row.insert(row.end(), map.begin(s), map.end(s));
+          const std::span<const ActiveTerm> r = map.row(s);
+          row.insert(row.end(), r.begin(), r.end());
         },
         loaded_);
   }

@@ -226,8 +226,7 @@ TEST(ToolContact, SkinFollowsTheHierarchyAndContactForcesDoItsVirtualWork) {
   for (int s = 0; s < c.map().size(); ++s) {
     if (c.vertex_force()[s].squaredNorm() == 0) continue;
     on_skin += c.vertex_force()[s].dot(c.map().value(s, fields, false));
-    for (const ActiveTerm* t = c.map().begin(s); t != c.map().end(s); ++t)
-      through_ghosts += t->level != c.map().level(s);
+    for (const ActiveTerm& t : c.map().row(s)) through_ghosts += t.level != c.map().level(s);
   }
   std::printf("skin = finest point: worst %.2e of %.2e m (%d of them interface ghosts); virtual "
               "work on the skin %.9e, on the active points %.9e; %d contact terms through "
