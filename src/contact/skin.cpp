@@ -43,6 +43,7 @@ Skin boundary_skin(const TetMesh& mesh) {
     if (index[p] == 0) {
       index[p] = static_cast<int>(s.rest.size());
       s.rest.push_back(mesh.points[p]);
+      s.point.push_back(static_cast<int>(p));
     }
   for (const Face& f : faces) s.triangles.push_back({index[f[0]], index[f[1]], index[f[2]]});
   s.area = vertex_areas(s);
@@ -51,7 +52,7 @@ Skin boundary_skin(const TetMesh& mesh) {
 }
 
 Skin surface_skin(std::vector<Vec3> points, std::vector<std::array<int, 3>> triangles) {
-  Skin s{std::move(points), std::move(triangles), {}, {}};
+  Skin s{std::move(points), std::move(triangles), {}, {}, {}};
   s.area = vertex_areas(s);
   s.edge = mean_edges(s);
   return s;

@@ -14,6 +14,7 @@ struct Skin {
   std::vector<std::array<int, 3>> triangles;   // outward-oriented
   std::vector<double> area;                    // m², a third of each adjacent triangle
   std::vector<double> edge;                    // m, mean length of the edges at each vertex
+  std::vector<int> point;  // a boundary skin: the mesh point each vertex is (empty: a given surface)
 };
 
 /// The boundary faces of `mesh`, its boundary vertices renumbered in increasing order.

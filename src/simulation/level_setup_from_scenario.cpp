@@ -69,7 +69,7 @@ LevelLaws level_laws(const Scenario& sc, const std::vector<const TetMesh*>& mesh
 }
 
 HierarchySetup hierarchy_setup(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
-                               const LevelLaws* laws) {
+                               const LevelLaws* laws, const Skin* skin) {
   check_level_consistency(sc, meshes);
   HierarchySetup s;
   s.law = material_law(sc.material);
@@ -102,7 +102,7 @@ HierarchySetup hierarchy_setup(const Scenario& sc, const std::vector<const TetMe
     s.loads.push_back(distribute_surface_load(*meshes.back(), sc.loads[k], k));
   if (!sc.tools.empty()) {
     s.tools = scenario_tools(sc);
-    if (!sc.skin.empty()) s.skin = scenario_skin(sc, *meshes.back());
+    s.skin = skin ? *skin : scenario_skin(sc, *meshes.back());
   }
   return s;
 }

@@ -17,9 +17,10 @@ struct LevelLaws {
 LevelLaws level_laws(const Scenario& scenario, const std::vector<const TetMesh*>& meshes);
 
 /// Step dt = frame_dt / substeps; fixed points selected on every level (may throw InputError).
-/// `laws`: from level_laws() (computed when not given).
+/// `laws`: from level_laws() (computed when not given); `skin`: the tools' skin,
+/// scenario_skin() of the finest level (built when not given).
 HierarchySetup hierarchy_setup(const Scenario& scenario, const std::vector<const TetMesh*>& meshes,
-                               const LevelLaws* laws = nullptr);
+                               const LevelLaws* laws = nullptr, const Skin* skin = nullptr);
 
 SpaceAdaptivitySettings space_settings(const Scenario& scenario);
 

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -474,12 +475,23 @@ void write_summary(const Scenario& sc, const HierarchicalSimulation& sim, const 
 
 }  // namespace
 
+namespace {
+
+// The skin the tools touch (none without tools), read once for the stable step and the run.
+std::optional<Skin> run_skin(const Scenario& sc, const std::vector<TetMesh>& meshes) {
+  if (sc.tools.empty()) return std::nullopt;
+  return scenario_skin(sc, meshes.back());
+}
+
+}  // namespace
+
 Scenario check_scenario_inputs(const Scenario& sc) {
   const std::vector<TetMesh> meshes = load_meshes(sc);
   // Fixed regions and loads select something; tool trajectories and the skin read.
   const LevelLaws laws = level_laws(sc, pointers(meshes));
-  hierarchy_setup(sc, pointers(meshes), &laws);
-  return with_stable_substeps(sc, pointers(meshes), &laws.laws);
+  const std::optional<Skin> skin = run_skin(sc, meshes);
+  hierarchy_setup(sc, pointers(meshes), &laws, skin ? &*skin : nullptr);
+  return with_stable_substeps(sc, pointers(meshes), &laws.laws, nullptr, skin ? &*skin : nullptr);
 }
 
 namespace {
@@ -493,8 +505,11 @@ RunSummary execute(const Scenario& input, const RunOptions& options, const Check
   const LevelLaws laws = level_laws(input, pointers(meshes));
   // Built once: the computed substeps and the simulation read the same models.
   std::vector<LevelModel> models = level_models(input, pointers(meshes), laws.laws);
-  const Scenario sc = with_stable_substeps(input, pointers(meshes), &laws.laws, &models);
-  const HierarchySetup setup = hierarchy_setup(sc, pointers(meshes), &laws);
+  // Built once too: the skin the computed substeps and the tools read.
+  const std::optional<Skin> skin = run_skin(input, meshes);
+  const Skin* skin_ptr = skin ? &*skin : nullptr;
+  const Scenario sc = with_stable_substeps(input, pointers(meshes), &laws.laws, &models, skin_ptr);
+  const HierarchySetup setup = hierarchy_setup(sc, pointers(meshes), &laws, skin_ptr);
   HierarchicalSimulation sim(pointers(meshes), setup, std::move(models));
   SpaceAdaptivity adapt(space_settings(sc), sim);
   const DivergenceGuard guard =

@@ -49,16 +49,29 @@ std::vector<int> reachable_skin(const Skin& skin, const std::vector<Tool>& tools
 // The run re-reads it every frame from the skin vertices near the tools and the levels moving
 // them (HierarchicalSimulation::stable_step_in_force).
 void add_tool_contact(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
-                      const MaterialLaw& law, std::vector<std::vector<PointInertia>>& star) {
+                      const MaterialLaw& law, const Skin* given,
+                      std::vector<std::vector<PointInertia>>& star) {
   if (sc.tools.empty()) return;
-  const Skin skin =
-      sc.skin.empty() ? boundary_skin(*meshes.back()) : scenario_skin(sc, *meshes.back());
+  // The skin of the last level that may become active: the run's (given) when that is the
+  // finest level or the skin is a surface file, else that level's boundary.
+  const int l = static_cast<int>(star.size()) - 1;
+  const bool usable = given && (given->point.empty() || l + 1 == static_cast<int>(meshes.size()));
+  const Skin own = usable ? Skin{} : scenario_skin(sc, *meshes[l]);
+  const Skin& skin = usable ? *given : own;
   const std::vector<Tool> tools = scenario_tools(sc);
   const SkinPenalty penalty = skin_penalty(skin, tools, law.lambda + 2 * law.mu);
-  const int l = static_cast<int>(star.size()) - 1;
+  const std::vector<int> reachable = reachable_skin(skin, tools, sc.time);
+  // The level's own boundary: each vertex is a point of the level, no search needed.
+  if (!skin.point.empty()) {
+    add_contact_bounds(
+        penalty, reachable,
+        [&](int s, std::vector<ActiveTerm>& row) { row.push_back({l, skin.point[s], 1.0}); },
+        star);
+    return;
+  }
   const SkinBinding binding = bind_skin(skin, {meshes[l]});
   add_contact_bounds(
-      penalty, reachable_skin(skin, tools, sc.time),
+      penalty, reachable,
       [&](int s, std::vector<ActiveTerm>& row) {
         const Tet& t = meshes[l]->tets[binding.tet[0][s]];
         for (int k = 0; k < 4; ++k) row.push_back({l, t[k], binding.bary[0][s][k]});
@@ -108,7 +121,7 @@ std::vector<LevelModel> level_models(const Scenario& sc, const std::vector<const
 
 StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
                        const std::vector<MaterialLaw>* laws,
-                       const std::vector<LevelModel>* built) {
+                       const std::vector<LevelModel>* built, const Skin* skin) {
   const MaterialLaw law = material_law(sc.material);
   const std::vector<MaterialLaw> computed = laws ? std::vector<MaterialLaw>{}
                                                  : level_laws(sc, meshes).laws;
@@ -133,7 +146,7 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
   // calibrated damping.
   for (int l = 0; l <= last; ++l)
     for (int p = 0; p < static_cast<int>(star[l].size()); ++p) star[l][p] = own(l, p);
-  add_tool_contact(sc, {meshes.begin(), meshes.begin() + last + 1}, law, star);
+  add_tool_contact(sc, meshes, law, skin, star);
   StableStep best{std::numeric_limits<double>::infinity(), 0, 0, ""};
   for (int l = 0; l <= last; ++l)
     for (int p = 0; p < static_cast<int>(star[l].size()); ++p) {
@@ -149,8 +162,8 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
 
 Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
                               const std::vector<MaterialLaw>* laws,
-                              const std::vector<LevelModel>* models) {
-  const StableStep stable = stable_step(sc, meshes, laws, models);
+                              const std::vector<LevelModel>* models, const Skin* skin) {
+  const StableStep stable = stable_step(sc, meshes, laws, models, skin);
   const double allowed = sc.time.courant * stable.dt;
   const bool time_levels = sc.time_levels.enabled;
   std::ostringstream where;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/skin.hpp"
 #include "mesh/tet_mesh.hpp"
 #include "physics/level_model.hpp"
 #include "scenario/scenario.hpp"
@@ -37,10 +38,12 @@ std::vector<LevelModel> level_models(const Scenario& sc, const std::vector<const
 
 /// The stable step estimate (before time.courant) of the scenario's levels 0..max_level (0
 /// only when space adaptivity is off). `laws`: each level's material (level_laws(), computed
-/// when not given); `models`: the levels' models (level_models(), built when not given).
+/// when not given); `models`: the levels' models (level_models(), built when not given);
+/// `skin`: the tools' skin (scenario_skin(), built when not given).
 StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
                        const std::vector<MaterialLaw>* laws = nullptr,
-                       const std::vector<LevelModel>* models = nullptr);
+                       const std::vector<LevelModel>* models = nullptr,
+                       const Skin* skin = nullptr);
 
 /// The scenario with time.substeps filled in when it was omitted (also in `resolved`, so the
 /// written scenario.yaml reruns identically), with an info line saying so; when it was given
@@ -48,6 +51,7 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
 /// Throws InputError when the step needed is beyond kMaxSubsteps per frame.
 Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
                               const std::vector<MaterialLaw>* laws = nullptr,
-                              const std::vector<LevelModel>* models = nullptr);
+                              const std::vector<LevelModel>* models = nullptr,
+                              const Skin* skin = nullptr);
 
 }  // namespace mrsim
