@@ -22,22 +22,24 @@ void build_incidence(PointAdjacency& a, int n, const std::vector<Tet>& tets) {
     }
 }
 
+// Each point's neighbours, deduplicated with a mark per point (a vertex is reached through each
+// of the tets it shares with i: about four times) before the few that remain are sorted.
 void build_neighbours(PointAdjacency& a, int n, const std::vector<Tet>& tets) {
   a.nbr_start.assign(n + 1, 0);
-  std::vector<int> scratch;
-  std::vector<std::vector<int>> lists(n);
+  a.nbr.clear();
+  a.nbr.reserve(a.inc_start[n] * 3 / 4);
+  std::vector<int> mark(n, -1);
   for (int i = 0; i < n; ++i) {
-    scratch.clear();
+    const auto first = static_cast<std::ptrdiff_t>(a.nbr.size());
     for (int s = a.inc_start[i]; s < a.inc_start[i + 1]; ++s)
       for (int v : tets[a.inc_tet[s]])
-        if (v != i) scratch.push_back(v);
-    std::sort(scratch.begin(), scratch.end());
-    scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
-    lists[i] = scratch;
-    a.nbr_start[i + 1] = a.nbr_start[i] + static_cast<int>(scratch.size());
+        if (v != i && mark[v] != i) {
+          mark[v] = i;
+          a.nbr.push_back(v);
+        }
+    std::sort(a.nbr.begin() + first, a.nbr.end());
+    a.nbr_start[i + 1] = static_cast<int>(a.nbr.size());
   }
-  a.nbr.reserve(a.nbr_start[n]);
-  for (const auto& l : lists) a.nbr.insert(a.nbr.end(), l.begin(), l.end());
 }
 
 }  // namespace
