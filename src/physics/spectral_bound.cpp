@@ -83,8 +83,10 @@ Eigen::VectorXd start_vector(int dofs) {
 // start vector; the Ritz value plus its residual bound (errs upwards). With `above`, it stops as
 // soon as the largest Ritz value exceeds it and returns that value: the largest eigenvalue of the
 // growing tridiagonal never decreases (Cauchy interlacing), so the full run would have returned
-// more than `above` too. `start`: start_vector(3 × points), when the caller runs several Lanczos
-// runs on one level.
+// more than `above` too. That test is made at every iteration (a tridiagonal of a few rows), the
+// convergence test every fifth: a run that ends within `above` is the same run as without the
+// test. `start`: start_vector(3 × points), when the caller runs several Lanczos runs on one
+// level.
 double lanczos_top(const PointAdjacency& adj, const std::vector<Term>& terms,
                    const std::vector<double>& mass, double tolerance, int max_iterations,
                    double above = std::numeric_limits<double>::infinity(),
@@ -109,6 +111,9 @@ double lanczos_top(const PointAdjacency& adj, const std::vector<Term>& terms,
       estimate = theta + residual;
       if (theta > above) return theta;
       if (residual <= tolerance * std::abs(theta) || beta.back() == 0) break;
+    } else if (above < std::numeric_limits<double>::infinity()) {
+      const double theta = top_ritz(alpha, beta).first;
+      if (theta > above) return theta;
     }
     q_prev.swap(q);
     q = w / beta.back();
