@@ -31,6 +31,12 @@ std::vector<double> penalty_stiffness(const Skin& skin, const Tool& tool, double
 
 SkinPenalty skin_penalty(const Skin& skin, const std::vector<Tool>& tools, double p_wave_modulus);
 
+/// The skin vertices a tool may reach during a run of `duration` s: within twice its bounding
+/// radius of its path, sampled 16 times per display frame (the skin moves away from a tool that
+/// presses it). Sorted.
+std::vector<int> reachable_skin(const Skin& skin, const std::vector<Tool>& tools, double duration,
+                                double frame_dt);
+
 /// The row of a skin vertex: the points that move it and their weights (level -1: the
 /// support, skipped).
 using SkinRow = std::function<void(int vertex, std::vector<ActiveTerm>& row)>;

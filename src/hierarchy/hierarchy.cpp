@@ -26,14 +26,6 @@ Hierarchy::Hierarchy(std::vector<HierarchyLevel> levels, std::vector<LevelLinks>
   }
 }
 
-NodeState Hierarchy::state(int l, int p) const {
-  const Flags& f = flags_[l];
-  if (f.subdivided[p]) return NodeState::GhostSub;
-  if (l == 0 || f.active_ref[p] > 0) return NodeState::Active;
-  if (f.ghost_ref[p] > 0 || f.support[p]) return NodeState::GhostIface;
-  return NodeState::Inactive;
-}
-
 void Hierarchy::restore(std::vector<HierarchyCounters> counters) {
   if (counters.size() != flags_.size())
     throw std::invalid_argument("Hierarchy::restore: " + std::to_string(counters.size()) +

@@ -32,7 +32,15 @@ class Hierarchy {
 
   int num_levels() const { return static_cast<int>(levels_.size()); }
   int num_points(int level) const { return static_cast<int>(flags_[level].subdivided.size()); }
-  NodeState state(int level, int point) const;
+  /// The status that follows from the counters (inline: the skin map and the lists ask for it per
+  /// point at every topology change).
+  NodeState state(int level, int point) const {
+    const Flags& f = flags_[level];
+    if (f.subdivided[point]) return NodeState::GhostSub;
+    if (level == 0 || f.active_ref[point] > 0) return NodeState::Active;
+    if (f.ghost_ref[point] > 0 || f.support[point]) return NodeState::GhostIface;
+    return NodeState::Inactive;
+  }
   bool subdivided(int level, int point) const { return flags_[level].subdivided[point] != 0; }
   const LevelLinks& links(int level) const { return links_[level]; }
   const HierarchyLevel& level(int l) const { return levels_[l]; }

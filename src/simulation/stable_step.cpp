@@ -18,32 +18,6 @@ namespace mrsim {
 
 namespace {
 
-// The skin vertices a tool may reach during the run: within twice its bounding radius of its
-// path (sampled 16 times per display frame; the skin moves away from a tool that presses it).
-// O(skin vertices × samples) distance tests, the poses computed once.
-std::vector<int> reachable_skin(const Skin& skin, const std::vector<Tool>& tools,
-                                const TimeSpec& time) {
-  const int samples =
-      static_cast<int>(std::min(1e5, 16 * std::ceil(time.duration / time.frame_dt)));
-  std::vector<Vec3> path;
-  std::vector<double> reach2;
-  for (const Tool& tool : tools) {
-    const double reach = 2 * bounding_radius(tool.shape);
-    for (int k = 0; k <= samples; ++k) {
-      path.push_back(tool.trajectory.pose(time.duration * k / samples).position);
-      reach2.push_back(reach * reach);
-    }
-  }
-  std::vector<int> out;
-  for (std::size_t s = 0; s < skin.rest.size(); ++s)
-    for (std::size_t k = 0; k < path.size(); ++k)
-      if ((path[k] - skin.rest[s]).squaredNorm() < reach2[k]) {
-        out.push_back(static_cast<int>(s));
-        break;
-      }
-  return out;
-}
-
 // The contact bound of the points of the finest level that may become active, which moves the
 // skin under a tool (adaptivity refines ahead of contact; without adaptivity that is level 0).
 // The run re-reads it every frame from the skin vertices near the tools and the levels moving
@@ -60,7 +34,7 @@ void add_tool_contact(const Scenario& sc, const std::vector<const TetMesh*>& mes
   const Skin& skin = usable ? *given : own;
   const std::vector<Tool> tools = scenario_tools(sc);
   const SkinPenalty penalty = skin_penalty(skin, tools, law.lambda + 2 * law.mu);
-  const std::vector<int> reachable = reachable_skin(skin, tools, sc.time);
+  const std::vector<int> reachable = reachable_skin(skin, tools, sc.time.duration, sc.time.frame_dt);
   // The level's own boundary: each vertex is a point of the level, no search needed.
   if (!skin.point.empty()) {
     add_contact_bounds(

@@ -1,12 +1,15 @@
 // The broad phase (SkinContact::near_tools, once per display frame): the skin vertices within
-// the tool's reach of its path over the frame. Most of the skin is far from the tool and is
-// passed on the path's bounding box alone; that shortcut may not change which vertices are found.
+// the tool's reach of its path over the frame; and the set-up's version over the whole run
+// (reachable_skin, for the contact bound of the computed substeps). Most of the skin is far from
+// the tool and is passed on the path's bounding box alone; that shortcut may not change which
+// vertices are found.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "../hierarchy/hierarchy_fixture.hpp"
+#include "contact/contact_bound.hpp"
 #include "contact/skin_contact.hpp"
 
 namespace mrsim {
@@ -73,6 +76,42 @@ TEST(BroadPhase, FindsEveryVertexWithinReachOfTheSampledPathAndNoOther) {
     near_total += static_cast<int>(expected.size());
   }
   EXPECT_GT(near_total, 20);  // the tool does come near the skin
+}
+
+
+TEST(BroadPhase, ReachableSkinOfARunIsEveryVertexNearOneOfItsSamplesAndNoOther) {
+  const testing::ThreeLevels f;
+  const Skin skin = boundary_skin(f.meshes.back());
+  std::vector<Tool> tools(2);
+  tools[0].shape.kind = ToolShapeKind::Sphere;
+  tools[0].shape.radius = 0.004;
+  tools[0].trajectory = ToolTrajectory({{0.0, Vec3(-0.01, 0.01, 0.05)},
+                                        {0.5, Vec3(0.05, 0.05, 0.043)},
+                                        {1.0, Vec3(0.12, 0.02, 0.06)}},
+                                       Interpolation::Smooth, "a");
+  tools[1].shape.kind = ToolShapeKind::Sphere;
+  tools[1].shape.radius = 0.003;
+  // Along the face x = 0, 5 mm outside it: its box is a segment, and the skin it reaches lies
+  // beside that segment, not within its box.
+  tools[1].trajectory = ToolTrajectory({{0.0, Vec3(-0.005, -0.01, 0.02)},
+                                        {1.0, Vec3(-0.005, 0.07, 0.02)}},
+                                       Interpolation::Linear, "b");
+  const double duration = 1.0, frame_dt = 0.05;
+  const std::vector<int> found = reachable_skin(skin, tools, duration, frame_dt);
+  // The rule in full: every sample of every tool, reach twice its bounding radius.
+  const int samples = 16 * 20;
+  std::vector<int> expected;
+  for (int s = 0; s < static_cast<int>(skin.rest.size()); ++s) {
+    bool near = false;
+    for (const Tool& tool : tools)
+      for (int k = 0; k <= samples && !near; ++k)
+        near = (tool.trajectory.pose(duration * k / samples).position - skin.rest[s]).norm() <
+               2 * tool.shape.radius;
+    if (near) expected.push_back(s);
+  }
+  EXPECT_EQ(found, expected);
+  EXPECT_GT(expected.size(), 20u);                   // both tools pass near the skin
+  EXPECT_LT(expected.size(), skin.rest.size() / 2);  // and most of it is out of reach
 }
 
 }  // namespace
