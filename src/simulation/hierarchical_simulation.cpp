@@ -379,6 +379,15 @@ void HierarchicalSimulation::for_each_surface_load(
       visit(target.level, target.point, load_factors_[target.load] * target.force);
 }
 
+void HierarchicalSimulation::for_each_surface_load_ahead(
+    double horizon, const std::function<void(int, int, const Vec3&)>& visit) const {
+  std::vector<double> ahead(loads_.size());
+  for (std::size_t k = 0; k < loads_.size(); ++k)
+    ahead[k] = peak_load_factor(loads_[k].profile, time_, time_ + horizon);
+  for (const LoadTarget& target : load_targets_)
+    if (target.level >= 0) visit(target.level, target.point, ahead[target.load] * target.force);
+}
+
 // A Dirichlet point stays at rest on every level, ghost or not: its row of the interpolation
 // map is zero, so it never carries a stale interpolated value into a split (a prestress) and
 // its force goes to the support, not to its sources.

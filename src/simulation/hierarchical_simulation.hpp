@@ -156,6 +156,10 @@ class HierarchicalSimulation {
   /// Calls visit(level, point, force) for every point a surface load acts on, with the load
   /// at the last update (N): external_force without the contacts.
   void for_each_surface_load(const std::function<void(int, int, const Vec3&)>& visit) const;
+  /// The same with each load at the largest magnitude its profile takes over the next
+  /// `horizon` s (surface_load.hpp peak_load_factor): what is about to act.
+  void for_each_surface_load_ahead(double horizon,
+                                   const std::function<void(int, int, const Vec3&)>& visit) const;
   /// The tools and the skin, nullptr without tools. Samples accumulate over the frames until
   /// the caller clears them.
   const SkinContact* contact() const { return contact_.get(); }

@@ -118,7 +118,10 @@ SpaceAdaptivitySettings space_settings(const Scenario& sc) {
   // One level finer per frame: look as many frames ahead as there are levels to go through.
   if (!sc.tools.empty() && sc.space.contact_refine)
     s.contact_lookahead = sc.time.frame_dt * static_cast<double>(sc.levels.size());
-  if (sc.space.predict) s.predict_horizon = sc.time.frame_dt;
+  if (sc.space.predict) {
+    s.predict_horizon = sc.time.frame_dt;
+    s.predict_window = sc.time.frame_dt * static_cast<double>(sc.levels.size());
+  }
   s.gravity = sc.gravity;
   return s;
 }

@@ -91,8 +91,10 @@ void SpaceAdaptivity::evaluate(const HierarchicalSimulation& sim) {
 }
 
 // c of the displacement predicted predict_horizon ahead from the applied loads alone,
-// u + ½ T² (g + f_load/m) on the free active points, interpolated to the ghosts as a step
-// interpolates u: where the loads are about to bend the body, c rises before the frame that
+// u + ½ T² (g + f_load/m) on the free active points, f_load the largest load the profiles
+// reach within predict_window (as many frames as levels: a load ramped in from zero reaches
+// the finest level before it bends the body), interpolated to the
+// ghosts as a step interpolates u: where the loads are about to bend the body, c rises before the frame that
 // bends it. Neither the velocity nor the internal forces enter: over a frame they would
 // multiply every fast vibration by up to (ωT)²/2 (hundreds on the liver) and refine wherever it
 // trembles; nor do the contacts, whose penalty force the body balances at once (the tools
@@ -106,7 +108,7 @@ void SpaceAdaptivity::add_predicted(const HierarchicalSimulation& sim) {
       predicted_[l][p] = st.free_point[p] ? st.u[p] + (0.5 * T * T) * s_.gravity : st.u[p];
     fields[l] = {predicted_[l].data(), scratch_[l].data()};
   }
-  sim.for_each_surface_load([&](int l, int p, const Vec3& f) {
+  sim.for_each_surface_load_ahead(std::max(T, s_.predict_window), [&](int l, int p, const Vec3& f) {
     const PointState& st = sim.state(l);
     if (st.free_point[p]) predicted_[l][p] += (0.5 * T * T * st.inv_mass[p]) * f;
   });

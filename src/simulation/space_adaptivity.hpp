@@ -35,6 +35,10 @@ struct SpaceAdaptivitySettings {
   // load refines where it will bend the body before the frame that bends it, not one frame
   // after. 0: off (the thesis' rule).
   double predict_horizon = 0;
+  // The loads in that prediction are the largest the profiles reach within this many seconds
+  // (at least predict_horizon): a split adds one level per frame, so a load ramped in from zero
+  // must be seen as many frames ahead as there are levels to go through.
+  double predict_window = 0;
   Vec3 gravity = Vec3::Zero();  // m/s², with the loads and contacts: the applied accelerations
 };
 

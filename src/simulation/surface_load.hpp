@@ -25,4 +25,9 @@ struct SurfaceLoad {
 /// Piecewise-linear profile, constant beyond its ends; 1 when empty.
 double load_factor(const std::vector<std::pair<double, double>>& profile, double t);
 
+/// The factor of largest magnitude the profile takes over [t0, t1] (at an end or at a knot
+/// within: the profile is linear between its knots), the earliest of equal magnitudes.
+double peak_load_factor(const std::vector<std::pair<double, double>>& profile, double t0,
+                        double t1);
+
 }  // namespace mrsim

@@ -65,6 +65,20 @@ TEST(SurfaceLoads, ProfileIsPiecewiseLinearAndHeldBeyondItsEnds) {
   EXPECT_DOUBLE_EQ(load_factor({}, 1.0), 1.0);
 }
 
+// What the refinement ahead of loads reads: the largest magnitude over a window, found at the
+// window's ends or at a knot inside it (a pulse shorter than the window is not missed).
+TEST(SurfaceLoads, PeakOverAWindowIsAtAnEndOrAKnotWithin) {
+  const std::vector<std::pair<double, double>> p{{0.1, 0.0}, {0.3, 1.0}, {0.5, 1.0}, {0.6, 0.0}};
+  EXPECT_DOUBLE_EQ(peak_load_factor(p, 0.0, 0.1), 0.0);  // before the ramp
+  EXPECT_NEAR(peak_load_factor(p, 0.0, 0.2), 0.5, 1e-12);  // ramping in: the window's end
+  EXPECT_DOUBLE_EQ(peak_load_factor(p, 0.25, 0.55), 1.0);  // the knots inside
+  EXPECT_NEAR(peak_load_factor(p, 0.55, 0.7), 0.5, 1e-12);  // ramping out: its start
+  const std::vector<std::pair<double, double>> pulse{{0.0, 0.0}, {0.11, -2.0}, {0.12, 0.0}};
+  EXPECT_DOUBLE_EQ(peak_load_factor(pulse, 0.1, 0.2), -2.0);  // within, and its sign
+  EXPECT_DOUBLE_EQ(peak_load_factor(pulse, 0.2, 0.3), 0.0);
+  EXPECT_DOUBLE_EQ(peak_load_factor({}, 0.0, 1.0), 1.0);
+}
+
 namespace {
 
 struct PressResult {
