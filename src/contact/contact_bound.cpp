@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/path_box.hpp"
 #include "contact/tool_shape.hpp"
 
 namespace mrsim {
@@ -72,32 +73,25 @@ void add_contact_bounds(const SkinPenalty& penalty, const std::vector<int>& vert
   }
 }
 
-// Most of the skin is far from a tool's path: a vertex farther than the reach from the box of
-// the tool's samples (with a margin for rounding) is farther from each of them, and is passed
-// without measuring them.
+// Most of the skin is far from a tool's path and is passed on the path's box (path_box.hpp).
 std::vector<int> reachable_skin(const Skin& skin, const std::vector<Tool>& tools, double duration,
                                 double frame_dt) {
   const int samples = static_cast<int>(std::min(1e5, 16 * std::ceil(duration / frame_dt)));
   struct Path {
     std::vector<Vec3> at;
-    Vec3 lo, hi;
+    PathBox box;
     double reach;
   };
   std::vector<Path> paths;
   for (const Tool& tool : tools) {
-    Path p;
-    p.reach = 2 * bounding_radius(tool.shape);
+    std::vector<Vec3> at;
     for (int k = 0; k <= samples; ++k)
-      p.at.push_back(tool.trajectory.pose(duration * k / samples).position);
-    p.lo = p.hi = p.at[0];
-    for (const Vec3& x : p.at) {
-      p.lo = p.lo.cwiseMin(x);
-      p.hi = p.hi.cwiseMax(x);
-    }
-    paths.push_back(std::move(p));
+      at.push_back(tool.trajectory.pose(duration * k / samples).position);
+    const PathBox box(at);
+    paths.push_back({std::move(at), box, 2 * bounding_radius(tool.shape)});
   }
   auto reached = [](const Path& p, const Vec3& x) {
-    if ((p.lo - x).cwiseMax(x - p.hi).cwiseMax(0.0).norm() > p.reach * (1 + 1e-9)) return false;
+    if (p.box.beyond(x, p.reach)) return false;
     for (const Vec3& a : p.at)
       if ((a - x).squaredNorm() < p.reach * p.reach) return true;
     return false;

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "contact/path_box.hpp"
+
 namespace mrsim {
 
 namespace {
@@ -63,18 +65,10 @@ void SkinContact::near_tool(int k, double t0, double t1, const std::vector<Vec3>
   // Sampling the path misses at most the chord of one interval: add the longest one.
   double chord = 0;
   for (int i = 1; i <= kSweepSamples; ++i) chord = std::max(chord, (path[i] - path[i - 1]).norm());
-  // Every segment lies in the samples' bounding box: a vertex farther from the box than the
-  // reach (with a margin for rounding) is farther from every segment, and is passed without
-  // measuring them (most of the skin). The vertices found are the same.
-  Vec3 lo = path[0], hi = path[0];
-  for (const Vec3& p : path) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+  const PathBox box(path);  // the vertices found are the same
   out.clear();
   for (int s = 0; s < static_cast<int>(x.size()); ++s) {
-    const double gap = (lo - x[s]).cwiseMax(x[s] - hi).cwiseMax(0.0).norm();
-    if (gap > (reach + chord) * (1 + 1e-9)) continue;
+    if (box.beyond(x[s], reach + chord)) continue;
     double d = (x[s] - path[0]).norm();
     for (int i = 1; i <= kSweepSamples && d > reach + chord; ++i)
       d = std::min(d, distance_to_segment(x[s], path[i - 1], path[i]));

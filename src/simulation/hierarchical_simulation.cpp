@@ -374,9 +374,7 @@ void HierarchicalSimulation::update_external(double t) {
 
 void HierarchicalSimulation::for_each_surface_load(
     const std::function<void(int, int, const Vec3&)>& visit) const {
-  for (const LoadTarget& target : load_targets_)
-    if (target.level >= 0)
-      visit(target.level, target.point, load_factors_[target.load] * target.force);
+  visit_loads(load_factors_, visit);
 }
 
 void HierarchicalSimulation::for_each_surface_load_ahead(
@@ -384,8 +382,14 @@ void HierarchicalSimulation::for_each_surface_load_ahead(
   std::vector<double> ahead(loads_.size());
   for (std::size_t k = 0; k < loads_.size(); ++k)
     ahead[k] = peak_load_factor(loads_[k].profile, time_, time_ + horizon);
+  visit_loads(ahead, visit);
+}
+
+void HierarchicalSimulation::visit_loads(
+    const std::vector<double>& factors,
+    const std::function<void(int, int, const Vec3&)>& visit) const {
   for (const LoadTarget& target : load_targets_)
-    if (target.level >= 0) visit(target.level, target.point, ahead[target.load] * target.force);
+    if (target.level >= 0) visit(target.level, target.point, factors[target.load] * target.force);
 }
 
 // A Dirichlet point stays at rest on every level, ghost or not: its row of the interpolation

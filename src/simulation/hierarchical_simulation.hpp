@@ -185,6 +185,9 @@ class HierarchicalSimulation {
   void run_steps(int steps);
   void adapt_step();
   void remap_skin();
+  // Each surface load's targets with its force at the given factor per load.
+  void visit_loads(const std::vector<double>& factors,
+                   const std::function<void(int, int, const Vec3&)>& visit) const;
   std::vector<const std::vector<std::uint8_t>*> free_points() const;
   void after_positions();
   void transfer_forces();

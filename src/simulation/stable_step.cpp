@@ -36,17 +36,15 @@ void add_tool_contact(const Scenario& sc, const std::vector<const TetMesh*>& mes
   const SkinPenalty penalty = skin_penalty(skin, tools, law.lambda + 2 * law.mu);
   const std::vector<int> reachable = reachable_skin(skin, tools, sc.time.duration, sc.time.frame_dt);
   // The level's own boundary: each vertex is a point of the level, no search needed.
-  if (!skin.point.empty()) {
-    add_contact_bounds(
-        penalty, reachable,
-        [&](int s, std::vector<ActiveTerm>& row) { row.push_back({l, skin.point[s], 1.0}); },
-        star);
-    return;
-  }
-  const SkinBinding binding = bind_skin(skin, {meshes[l]});
+  const bool on_points = !skin.point.empty();
+  const SkinBinding binding = on_points ? SkinBinding{} : bind_skin(skin, {meshes[l]});
   add_contact_bounds(
       penalty, reachable,
       [&](int s, std::vector<ActiveTerm>& row) {
+        if (on_points) {
+          row.push_back({l, skin.point[s], 1.0});
+          return;
+        }
         const Tet& t = meshes[l]->tets[binding.tet[0][s]];
         for (int k = 0; k < 4; ++k) row.push_back({l, t[k], binding.bary[0][s][k]});
       },

@@ -49,19 +49,28 @@ void random_operations(Hierarchy& h, std::mt19937& rng, int count) {
   h.collect_garbage();
 }
 
-TEST(SkinMap, RowsAreTheMergedInterpolationRowsOfTheMovingTet) {
-  const ThreeLevels f;
-  Hierarchy h = f.make();
-  const Skin skin = boundary_skin(f.meshes.back());
-  std::vector<const TetMesh*> meshes;
-  for (const TetMesh& m : f.meshes) meshes.push_back(&m);
-  const SkinBinding binding = bind_skin(skin, meshes);
-  std::vector<std::vector<std::uint8_t>> free(f.meshes.size());
+// The three box levels with a Dirichlet face (z = 0), their skin bound to every level.
+struct SkinOnThreeLevels {
+  ThreeLevels f;
+  Skin skin = boundary_skin(f.meshes.back());
+  SkinBinding binding;
+  std::vector<std::vector<std::uint8_t>> free;
   std::vector<const std::vector<std::uint8_t>*> free_point;
-  for (std::size_t l = 0; l < f.meshes.size(); ++l) {
-    for (const Vec3& X : f.meshes[l].points) free[l].push_back(X.z() > 1e-9 ? 1 : 0);
-    free_point.push_back(&free[l]);
+  SkinOnThreeLevels() : free(f.meshes.size()) {
+    std::vector<const TetMesh*> meshes;
+    for (const TetMesh& m : f.meshes) meshes.push_back(&m);
+    binding = bind_skin(skin, meshes);
+    for (std::size_t l = 0; l < f.meshes.size(); ++l) {
+      for (const Vec3& X : f.meshes[l].points) free[l].push_back(X.z() > 1e-9 ? 1 : 0);
+      free_point.push_back(&free[l]);
+    }
   }
+};
+
+TEST(SkinMap, RowsAreTheMergedInterpolationRowsOfTheMovingTet) {
+  const SkinOnThreeLevels c;
+  const auto& [f, skin, binding, free, free_point] = c;
+  Hierarchy h = f.make();
   SkinMap map;
   std::mt19937 rng(11);
   int through_ghosts = 0, held = 0, long_rows = 0;
@@ -109,19 +118,10 @@ TEST(SkinMap, RowsAreTheMergedInterpolationRowsOfTheMovingTet) {
 // on the held ones, a ghost's from its row (what the ghost refresh computes). A skin vertex's
 // position from its level's tet is then its row's value.
 TEST(SkinMap, InterpolatedPositionIsTheRowsValueWhenTheGhostsAreCurrent) {
-  const ThreeLevels f;
+  const SkinOnThreeLevels c;
+  const auto& [f, skin, binding, free, free_point] = c;
   Hierarchy h = f.make();
-  const Skin skin = boundary_skin(f.meshes.back());
-  std::vector<const TetMesh*> meshes;
-  for (const TetMesh& m : f.meshes) meshes.push_back(&m);
-  const SkinBinding binding = bind_skin(skin, meshes);
   const int L = static_cast<int>(f.meshes.size());
-  std::vector<std::vector<std::uint8_t>> free(L);
-  std::vector<const std::vector<std::uint8_t>*> free_point;
-  for (int l = 0; l < L; ++l) {
-    for (const Vec3& X : f.meshes[l].points) free[l].push_back(X.z() > 1e-9 ? 1 : 0);
-    free_point.push_back(&free[l]);
-  }
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> r(-1.0, 1.0);
   SkinMap map;
