@@ -1,6 +1,9 @@
 #include "hierarchy/interface_inertia.hpp"
 
 #include <cmath>
+#include <span>
+
+#include "hierarchy/merged_rows.hpp"
 
 namespace mrsim {
 
@@ -27,24 +30,55 @@ void weighted_star(const InertiaLevel& lv, const StatusLists& lists, int l,
   }
 }
 
-// A ghost's inertia to the vertices of its source tet (one ghost of `ghosts`).
-void pass_on(const std::vector<int>& ghosts, const Embedding& emb, const TetMesh& source_mesh,
-             const std::vector<std::uint8_t>& free_point, std::vector<PointInertia>& from,
-             std::vector<PointInertia>& to) {
+// A ghost's mass to the vertices of its source tet (one ghost of `ghosts`): the diagonal of its
+// consistent mass, hop by hop along a chain of ghosts.
+void pass_mass_on(const std::vector<int>& ghosts, const Embedding& emb,
+                  const TetMesh& source_mesh, const std::vector<std::uint8_t>& free_point,
+                  std::vector<PointInertia>& from, std::vector<PointInertia>& to) {
   for (int g : ghosts) {
     if (!free_point[g]) continue;  // held by the support, like its force
     const Bary& b = emb.bary[g];
-    double total = 0;
-    for (double w : b) total += std::abs(w);
     const Tet& t = source_mesh.tets[emb.tet[g]];
     const PointInertia& p = from[g];
     for (int k = 0; k < 4; ++k) {
       PointInertia& q = to[t[k]];
       q.mass += b[k] * b[k] * p.mass;
       q.gravity_mass += b[k] * p.gravity_mass;
-      const double row = std::abs(b[k]) * total;
-      q.stiffness += row * p.stiffness;
-      q.damping += row * p.damping;
+    }
+  }
+}
+
+struct OwnBound {
+  double stiffness = 0, damping = 0;
+};
+
+// A ghost's own stiffness and damping bounds to the active points that move it, along its whole
+// row c (the chain composed; its mass went hop by hop, above, and is final here). For any
+// a_k > 0, |Σ c_k u_k|² ≤ (Σ_j c_j²/a_j) Σ_k a_k |u_k|² (Cauchy–Schwarz), so point k takes
+// a_k Σ_j c_j²/a_j of the ghost's bound. a_k = |c_k| (the rule hop by hop) piles a coarse
+// ghost's stiffness on the light fine points at the fringe of a refined region; a_k = m_k
+// spreads the rank-one term's own eigenvalue over every point of a wide row. a_k = m_k √|c_k|
+// is tighter than both, measured (docs/integrators.md "The stable step").
+void pass_bounds_on(const Hierarchy& h, const std::vector<int>& ghosts, int l,
+                    const std::vector<const std::vector<std::uint8_t>*>& free,
+                    const OwnBound* own, MergedRows& rows,
+                    std::vector<std::vector<PointInertia>>& out) {
+  for (size_t i = 0; i < ghosts.size(); ++i) {
+    const int g = ghosts[i];
+    if (!(*free[l])[g]) continue;
+    const MergedRows::Span row = rows.row(h, free, l, g);
+    const std::span<const ActiveTerm> terms(rows.terms().data() + row.begin,
+                                            rows.terms().data() + row.end);
+    double q = 0;  // Σ_j c_j² / a_j
+    for (const ActiveTerm& t : terms)
+      if (t.level >= 0 && out[t.level][t.point].mass > 0)
+        q += std::pow(std::abs(t.weight), 1.5) / out[t.level][t.point].mass;
+    for (const ActiveTerm& t : terms) {
+      if (t.level < 0) continue;  // the support does not move
+      PointInertia& p = out[t.level][t.point];
+      const double share = std::sqrt(std::abs(t.weight)) * p.mass * q;
+      p.stiffness += share * own[i].stiffness;
+      p.damping += share * own[i].damping;
     }
   }
 }
@@ -66,14 +100,29 @@ void interface_inertia(const Hierarchy& h, const StatusLists& lists,
     }
   }
   if (!transfer) return;
-  // The order of transfer_ghost_forces: a chain of ghosts hands its inertia on until it
-  // reaches active points.
+  // The ghosts' own bounds, in the order of their lists, before their masses chain.
+  std::vector<OwnBound> own;
+  std::vector<const std::vector<std::uint8_t>*> free(L);
+  for (int l = 0; l < L; ++l) {
+    free[l] = levels[l].free_point;
+    for (const auto* ghosts : {&lists.ghost_iface(l), &lists.ghost_sub(l)})
+      for (int g : *ghosts) own.push_back({out[l][g].stiffness, out[l][g].damping});
+  }
+  // The order of transfer_ghost_forces: a chain of ghosts hands its mass on until it reaches
+  // active points.
   for (int l = L - 1; l >= 1; --l)
-    pass_on(lists.ghost_iface(l), h.links(l).parent_tet, *h.level(l - 1).mesh,
-            *levels[l].free_point, out[l], out[l - 1]);
+    pass_mass_on(lists.ghost_iface(l), h.links(l).parent_tet, *h.level(l - 1).mesh,
+                 *levels[l].free_point, out[l], out[l - 1]);
   for (int l = 0; l + 1 < L; ++l)
-    pass_on(lists.ghost_sub(l), h.links(l).child_tet, *h.level(l + 1).mesh, *levels[l].free_point,
-            out[l], out[l + 1]);
+    pass_mass_on(lists.ghost_sub(l), h.links(l).child_tet, *h.level(l + 1).mesh,
+                 *levels[l].free_point, out[l], out[l + 1]);
+  MergedRows rows;
+  const OwnBound* next = own.data();
+  for (int l = 0; l < L; ++l)
+    for (const auto* ghosts : {&lists.ghost_iface(l), &lists.ghost_sub(l)}) {
+      pass_bounds_on(h, *ghosts, l, free, next, rows, out);
+      next += ghosts->size();
+    }
 }
 
 }  // namespace mrsim

@@ -13,8 +13,10 @@
 // spurious modes kept liver_press refining. The inertial mass is therefore a little below the
 // simulated volume's at interfaces; gravity uses the mass passed on with b (the gradient of
 // the potential energy, total kept). The energy bounds of stiffness and damping
-// (physics/stable_step_bound.hpp) travel with |b_k| × Σ|b| (Cauchy–Schwarz:
-// |Σ b u|² ≤ Σ|b| Σ|b| |u|²), so every active point knows the stable step of what it carries.
+// (physics/stable_step_bound.hpp) go straight to the active points along the ghost's whole row
+// c (the chain of ghosts composed), point k taking a_k Σ_j c_j²/a_j of them with a_k =
+// m_k √|c_k| (Cauchy–Schwarz: |Σ c u|² ≤ Σ c²/a Σ a |u|² for any a > 0), so every active point
+// knows the stable step of what it carries.
 #include <cstdint>
 #include <vector>
 
@@ -34,7 +36,7 @@ struct InertiaLevel {
 /// no ghosts (bit for bit the lumped mass), the weighted and transferred values otherwise.
 /// Ghost entries are left as scratch. `transfer`: the energy couplings (ghosts pass their share
 /// on); without it (the thesis' force coupling) every active point keeps its own star.
-/// O(active + ghosts + live tets).
+/// O(active + live tets + the ghosts' merged rows).
 void interface_inertia(const Hierarchy& h, const StatusLists& lists,
                        const std::vector<InertiaLevel>& levels, bool transfer,
                        std::vector<std::vector<PointInertia>>& out);

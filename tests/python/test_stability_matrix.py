@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """The stability test matrix (issue 15 point 3, scripts/stability_matrix.py) in its quick form:
-the beam and the adaptive beam, modified Euler and semi-implicit, with and without time levels.
+the beam and the adaptive beam, modified Euler and semi-implicit, with and without time levels,
+and liver_press's explicit row cut at 0.15 s (the finest level comes in ahead of the load).
 Every run with a computed step finishes, and the measured true limit lies between 1.0 and 2.5
 times mrsim's estimate for one global step, explicit or semi-implicit (1.0 and 5.0 with time
 levels, whose steps are powers of two; 1.0 and 4.0 for a global semi-implicit step in these
@@ -40,6 +41,21 @@ def main():
               what + ": true limit / estimate %.2f in [%g, %s]" % (row["ratio"], lo, hi))
         if not row["time_levels"] and row["integrator"] == "modified_euler":
             check(row["ratio"] <= 2.5, what + ": one global explicit step, within 2.5")
+    # liver_press refines ahead of its load (adaptivity.space.predict): while the finest level
+    # comes in, light fine points at the fringe of the refined region receive what coarse
+    # ghosts pass on. Shared by the masses that receive it, the estimate in force stays within
+    # the band (with the weights alone it fell to 0.149 ms at t = 0.08 s: 2.7 times below the
+    # true limit; docs/integrators.md "The stable step").
+    with tempfile.TemporaryDirectory() as work:
+        r = subprocess.run(["/usr/bin/python3", script, "--binary", args.binary, "--work", work,
+                            "--cases", "liver_press", "--integrators", "modified_euler", "--psi",
+                            "given", "--time-levels", "off", "--duration", "0.15"],
+                           capture_output=True, text=True, timeout=600)
+        path = os.path.join(work, "stability.json")
+        press = json.load(open(path)) if os.path.exists(path) else []
+    check(len(press) == 1 and press[0]["auto_exit"] == 0 and 1.0 <= press[0]["ratio"] <= 2.5,
+          "liver_press cut at 0.15 s, one global explicit step: true limit / estimate in force "
+          "in [1, 2.5]: %s" % (press[0]["ratio"] if press else (r.stdout + r.stderr)[-600:]))
     # Issue 16 point 4: in the adaptive hierarchy the semi-implicit step stays at least twice
     # the explicit one (the interface mass keeps the filter's margin).
     limit = {(r["case"], r["integrator"]): r["limit_substeps"] for r in rows

@@ -143,7 +143,10 @@ def test_liver_thesis(binary, source, tmp):
     check(fine == 33 and active[:, -1].max() == 44 and active[-1, -1] == 0 and active[-1, 0] == active[0, 0],
           "finest level active under the probe (%d of %d points at the strongest push, README: "
           "33, at most 44), back to level 0 at the end" % (fine, summary["points"][-1]))
-    check(np.count_nonzero(levels) >= 3,
+    # Two time levels at least: the graded finest patch and the coarse body around it. (Three
+    # before the ghosts' stiffness bounds were shared by the masses receiving them: the third
+    # held a few fringe points whose estimate was too cautious; docs/integrators.md.)
+    check(np.count_nonzero(levels) >= 2,
           "particles on %d time levels at the strongest push (%s)" % (np.count_nonzero(levels), levels))
     peak = summary["peak_tool_force"]
     check(abs(peak - 1.267) < 0.0005, "peak force on the probe %.4f N (README: 1.267 N)" % peak)
