@@ -100,6 +100,7 @@ struct SpaceAdaptivitySpec {
   int min_dwell_frames = 5;
   bool contact_refine = true;  // refine ahead of the tools (look-ahead), not only on c
   bool predict = false;        // c also on u + ½ T² (g + f_ext/m), T = frame_dt (no lag)
+  int split_checks = 1;        // splits decided this many times a frame (merges at its end)
   Coupling coupling = Coupling::Energy;
 };
 

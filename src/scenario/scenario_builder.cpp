@@ -86,6 +86,7 @@ SpaceAdaptivitySpec space_spec(const json& a) {
   spec.min_dwell_frames = a["min_dwell_frames"].get<int>();
   spec.contact_refine = a["contact_refine"].get<bool>();
   spec.predict = a["predict"].get<bool>();
+  spec.split_checks = a["split_checks"].get<int>();
   spec.coupling = a["coupling"] == "force"               ? Coupling::Force
                   : a["coupling"] == "energy_consistent" ? Coupling::EnergyConsistent
                                                          : Coupling::Energy;

@@ -101,6 +101,20 @@ void check_adaptivity(const json& document, std::vector<Issue>& issues) {
     issues.push_back({"/time/integrator",
                       "newton_cotes is a two-step scheme: every particle needs the same step, so "
                       "it does not run with adaptivity.time.enabled (use modified_euler)"});
+  const auto checks = space["split_checks"].get<std::int64_t>();
+  if ((checks & (checks - 1)) != 0)
+    issues.push_back({"/adaptivity/space/split_checks",
+                      "must be a power of two (the frame's steps are split into equal parts), "
+                      "got " + std::to_string(checks)});
+  else if (checks > 1 && document["adaptivity"]["time"]["enabled"].get<bool>())
+    issues.push_back({"/adaptivity/space/split_checks",
+                      "needs one global step: time levels run a whole frame's W-cycle at once "
+                      "(set it to 1, or adaptivity.time.enabled to false)"});
+  else if (checks > 1 && time.contains("substeps") &&
+           time["substeps"].get<std::int64_t>() % checks != 0)
+    issues.push_back({"/adaptivity/space/split_checks",
+                      "must divide time.substeps (" + time["substeps"].dump() +
+                          ") into equal parts, got " + std::to_string(checks)});
   const std::size_t levels = document["object"]["levels"].size();
   if (space.contains("max_level") && space["max_level"].get<std::size_t>() >= levels)
     issues.push_back({"/adaptivity/space/max_level",

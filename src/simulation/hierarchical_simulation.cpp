@@ -163,6 +163,14 @@ void HierarchicalSimulation::advance_frame(std::vector<TimeLevelChange>* changes
   compute_forces();
 }
 
+void HierarchicalSimulation::advance_frame_part(int part, int parts) {
+  if (time_levels_)
+    throw std::logic_error("HierarchicalSimulation::advance_frame_part: not with time levels");
+  if (part == 0) begin_contact_frame(steps_per_frame_ * dt_);
+  adapt_step();
+  run_steps(steps_per_frame_ / parts);
+}
+
 // method.md §5.4 (time/w_cycle.hpp): at each tick that kicks somebody, every particle first
 // drifts to that tick and the ghosts follow, then the particles of (at most) two time levels get
 // their forces and kicks. With every particle on the finest level this is exactly the global

@@ -81,6 +81,13 @@ class HierarchicalSimulation {
   /// One display frame: steps_per_frame steps of dt, or the W-cycle with time levels. Time-
   /// level changes (refinements during the frame, coarsenings at its end) go to `changes`.
   void advance_frame(std::vector<TimeLevelChange>* changes = nullptr);
+  /// Part `part` of a display frame cut into `parts` equal parts (without time levels; `parts`
+  /// a power of two, at most steps_per_frame): part 0 starts the frame as advance_frame() does,
+  /// and every part first adapts the step to the stable step in force, so that splits made
+  /// between parts (adaptivity.space.split_checks) run at their own stable step. One part is
+  /// advance_frame().
+  void advance_frame_part(int part, int parts);
+  bool time_levels_enabled() const { return time_levels_ != nullptr; }
   /// Simulated time (s) since the start.
   double time() const { return time_; }
   /// Steps of the next (or current) frame without time levels: the setup's, or more when the

@@ -416,6 +416,26 @@ BudgetRule budget_rule(const Scenario& sc, double last_simulation_wall) {
   return BudgetRule::Free;
 }
 
+// One display frame. With adaptivity.space.split_checks = n > 1 (one global step) the frame
+// runs in n equal parts and the criterion may split after each of the first n - 1 (merges wait
+// for the frame's end): a sudden load refines within the frame that bends the object. Not after
+// a frame over its real-time budget. The splits go to `events`.
+void advance_frame(HierarchicalSimulation& sim, SpaceAdaptivity& adapt, int frame, int checks,
+                   bool hold_splits, std::vector<TimeLevelChange>& changes, FrameTiming& timing,
+                   std::vector<HierarchyEvent>& events) {
+  events.clear();
+  const int parts = std::min(checks, sim.steps_per_frame());  // both powers of two
+  if (parts <= 1 || sim.time_levels_enabled()) {
+    timing.phase(Task::Integration, [&] { sim.advance_frame(&changes); });
+    return;
+  }
+  for (int part = 0; part < parts; ++part) {
+    timing.phase(Task::Integration, [&] { sim.advance_frame_part(part, parts); });
+    if (part + 1 < parts && !hold_splits)
+      timing.phase(Task::Adaptivity, [&] { adapt.split_within_frame(sim, frame, events); });
+  }
+}
+
 nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& sim,
                             const RunState& st, const RunSummary& sum, double peak_tool_force,
                             const TaskClock::Parts& parts) {
@@ -550,15 +570,18 @@ RunSummary execute(const Scenario& input, const RunOptions& options, const Check
       }
       writer.write(0, 0.0, 0.0, st.energies, timing);
     }
+    bool hold_splits = false;  // the last frame was over its real-time budget
     for (int frame = st.frames_done + 1; frame <= frames; ++frame) {
       timing.restart();
       const auto tf = timing.start();
       changes.clear();
       const int substeps = sim.steps_per_frame();
-      timing.phase(Task::Integration, [&] { sim.advance_frame(&changes); });
+      advance_frame(sim, adapt, frame, sc.space.split_checks, hold_splits, changes, timing, events);
+      record_events(events, writer, st);
       if (sim.steps_per_frame() != substeps) report_substeps(sim, frame, substeps, writer, st);
       // The frame just simulated decides whether the hierarchy may grow at its boundary.
       const BudgetRule budget = budget_rule(sc, seconds_since(tf));
+      hold_splits = budget != BudgetRule::Free;
       sum.steps = sim.steps();
       const double time = frame * sc.time.frame_dt;
       st.energies = hierarchy_energies(sim);

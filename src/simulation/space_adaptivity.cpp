@@ -221,10 +221,24 @@ void SpaceAdaptivity::update(HierarchicalSimulation& sim, int frame,
   if (budget == BudgetRule::Free) split_worst(sim, frame, events);
   if (budget == BudgetRule::Shed) shed(sim, frame, events);
   merge_calm(sim, frame, events);
-  // Only after a split or merge (issue 17: rebuild at topology changes only): the supports
-  // follow the statuses, and applying no change would rebuild the same lists, masses and
-  // stable steps and restart the integrators (Störmer–Verlet's saved half-kick force and
-  // Newton–Cotes' step before lost for nothing).
+  apply(sim, frame, events);
+}
+
+void SpaceAdaptivity::split_within_frame(HierarchicalSimulation& sim, int frame,
+                                         std::vector<HierarchyEvent>& events) {
+  evaluate(sim);
+  if (!s_.enabled || sim.num_levels() == 1) return;
+  mark_contact_region(sim);
+  split_worst(sim, frame, events);
+  apply(sim, frame, events);
+}
+
+// Only after a split or merge (issue 17: rebuild at topology changes only): the supports follow
+// the statuses, and applying no change would rebuild the same lists, masses and stable steps
+// and restart the integrators (Störmer–Verlet's saved half-kick force and Newton–Cotes' step
+// before lost for nothing).
+void SpaceAdaptivity::apply(HierarchicalSimulation& sim, int frame,
+                            std::vector<HierarchyEvent>& events) {
   if (!sim.changes_pending()) return;
   const int released = sim.collect_garbage();
   if (released > 0) events.push_back({frame, "gc", -1, released});

@@ -61,6 +61,10 @@ class SpaceAdaptivity {
   /// Appends what happened to `events`.
   void update(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events,
               BudgetRule budget = BudgetRule::Free);
+  /// Within a frame (adaptivity.space.split_checks): the criterion and the splits only; merges
+  /// and their dwell wait for the frame's end. Appends the splits to `events`.
+  void split_within_frame(HierarchicalSimulation& sim, int frame,
+                          std::vector<HierarchyEvent>& events);
   /// c_i of the last update, per level (0 where the point is not active).
   const std::vector<double>& criterion(int level) const { return criterion_[level]; }
   /// Frame of the last split of every point (-1: never), per level: what a checkpoint keeps
@@ -78,6 +82,7 @@ class SpaceAdaptivity {
   bool split_within_cap(HierarchicalSimulation& sim, int l, int p, int frame, std::int64_t& active,
                         std::vector<HierarchyEvent>& events);
   void merge_calm(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events);
+  void apply(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events);
   void shed(HierarchicalSimulation& sim, int frame, std::vector<HierarchyEvent>& events);
 
   SpaceAdaptivitySettings s_;
