@@ -167,7 +167,12 @@ void HierarchicalSimulation::advance_frame_part(int part, int parts) {
   if (time_levels_)
     throw std::logic_error("HierarchicalSimulation::advance_frame_part: not with time levels");
   if (part == 0) begin_contact_frame(steps_per_frame_ * dt_);
-  adapt_step();
+  // Within the frame the step only shortens, so that every part stays a whole number of steps.
+  adapt_step(part == 0);
+  if (parts < 1 || steps_per_frame_ % parts != 0)
+    throw std::logic_error("HierarchicalSimulation::advance_frame_part: " +
+                           std::to_string(steps_per_frame_) + " steps in " +
+                           std::to_string(parts) + " parts");
   run_steps(steps_per_frame_ / parts);
 }
 
@@ -239,15 +244,16 @@ void HierarchicalSimulation::advance(int steps) {
 }
 
 // The frame's step follows the stable step in force (without time levels): doubled as often as
-// it needs, halved back while twice the step still fits, never coarser than the setup's.
-void HierarchicalSimulation::adapt_step() {
+// it needs, halved back while twice the step still fits (`may_lengthen`: at frame starts only),
+// never coarser than the setup's.
+void HierarchicalSimulation::adapt_step(bool may_lengthen) {
   if (!adapt_step_) return;
   const double allowed = courant_ * in_force_.dt;
   while (dt_ > allowed && steps_per_frame_ <= (1 << 29)) {
     steps_per_frame_ *= 2;
     dt_ = global_frame_ / steps_per_frame_;
   }
-  while (steps_per_frame_ > base_steps_per_frame_ && 2 * dt_ <= allowed) {
+  while (may_lengthen && steps_per_frame_ > base_steps_per_frame_ && 2 * dt_ <= allowed) {
     steps_per_frame_ /= 2;
     dt_ = global_frame_ / steps_per_frame_;
   }

@@ -82,10 +82,10 @@ class HierarchicalSimulation {
   /// level changes (refinements during the frame, coarsenings at its end) go to `changes`.
   void advance_frame(std::vector<TimeLevelChange>* changes = nullptr);
   /// Part `part` of a display frame cut into `parts` equal parts (without time levels; `parts`
-  /// a power of two, at most steps_per_frame): part 0 starts the frame as advance_frame() does,
-  /// and every part first adapts the step to the stable step in force, so that splits made
-  /// between parts (adaptivity.space.split_checks) run at their own stable step. One part is
-  /// advance_frame().
+  /// dividing steps_per_frame): part 0 starts the frame as advance_frame() does, and every
+  /// later part first shortens the step if the stable step in force needs it (never lengthens
+  /// it: the parts stay whole numbers of steps), so that splits made between parts
+  /// (adaptivity.space.split_checks) run at their own stable step. One part is advance_frame().
   void advance_frame_part(int part, int parts);
   bool time_levels_enabled() const { return time_levels_ != nullptr; }
   /// Simulated time (s) since the start.
@@ -190,7 +190,7 @@ class HierarchicalSimulation {
   void update_external(double t);
   void begin_contact_frame(double duration);
   void run_steps(int steps);
-  void adapt_step();
+  void adapt_step(bool may_lengthen = true);
   void remap_skin();
   // Each surface load's targets with its force at the given factor per load.
   void visit_loads(const std::vector<double>& factors,
