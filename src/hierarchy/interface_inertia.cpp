@@ -52,8 +52,8 @@ struct OwnBound {
   double stiffness = 0, damping = 0;
 };
 
-// A ghost's own stiffness and damping bounds to the active points that move it, along its whole
-// row c (the chain composed; its mass went hop by hop, above, and is final here). For any
+// A ghost's own stiffness and damping bounds to the active points that move it, along its
+// whole row c (the chain composed; its mass went hop by hop, above, and is final here). For any
 // a_k > 0, |Σ c_k u_k|² ≤ (Σ_j c_j²/a_j) Σ_k a_k |u_k|² (Cauchy–Schwarz), so point k takes
 // a_k Σ_j c_j²/a_j of the ghost's bound. a_k = |c_k| (the rule hop by hop) piles a coarse
 // ghost's stiffness on the light fine points at the fringe of a refined region; a_k = m_k

@@ -420,9 +420,9 @@ BudgetRule budget_rule(const Scenario& sc, double last_simulation_wall) {
 // runs in n equal parts and the criterion may split after each of the first n - 1 (merges wait
 // for the frame's end): a sudden load refines within the frame that bends the object. Not after
 // a frame over its real-time budget. The splits go to `events`.
-void advance_frame(HierarchicalSimulation& sim, SpaceAdaptivity& adapt, int frame, int checks,
-                   bool hold_splits, std::vector<TimeLevelChange>& changes, FrameTiming& timing,
-                   std::vector<HierarchyEvent>& events) {
+void simulate_frame(HierarchicalSimulation& sim, SpaceAdaptivity& adapt, int frame, int checks,
+                    bool hold_splits, std::vector<TimeLevelChange>& changes, FrameTiming& timing,
+                    std::vector<HierarchyEvent>& events) {
   events.clear();
   const int parts = std::min(checks, sim.steps_per_frame());  // both powers of two
   if (parts <= 1 || sim.time_levels_enabled()) {
@@ -576,7 +576,8 @@ RunSummary execute(const Scenario& input, const RunOptions& options, const Check
       const auto tf = timing.start();
       changes.clear();
       const int substeps = sim.steps_per_frame();
-      advance_frame(sim, adapt, frame, sc.space.split_checks, hold_splits, changes, timing, events);
+      simulate_frame(sim, adapt, frame, sc.space.split_checks, hold_splits, changes, timing,
+                     events);
       record_events(events, writer, st);
       if (sim.steps_per_frame() != substeps) report_substeps(sim, frame, substeps, writer, st);
       // The frame just simulated decides whether the hierarchy may grow at its boundary.
