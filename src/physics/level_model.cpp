@@ -65,7 +65,7 @@ void measure_spectrum(LevelModel& m, bool semi_implicit) {
   if (semi_implicit)
     m.filter_spectrum = filter_scale(largest_filtered_eigenvalue(m.adj, m.K, m.mass),
                                      m.stiffness_spectrum.eigenvalue, k_max,
-                                     m.law.strain == StrainMeasure::GreenLagrange);
+                                     stiffens(m) ? kFilterStiffening : 0.0);
   if (m.D.empty() || m.num_points() == 0) return;
   // The level's combined limit (damping and stiffness modes apart) over √kSpectralMargin.
   const SpectralScale& k = semi_implicit ? m.filter_spectrum : m.stiffness_spectrum;
@@ -78,12 +78,22 @@ void measure_spectrum(LevelModel& m, bool semi_implicit) {
 
 }  // namespace
 
-PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit, bool time_levels) {
+bool stiffens(const LevelModel& m) { return m.law.strain == StrainMeasure::GreenLagrange; }
+
+SpectralScale filter_spectrum_at(const LevelModel& m, double growth) {
+  if (!stiffens(m)) return m.filter_spectrum;
+  return filter_scale(m.filter_spectrum.eigenvalue, m.stiffness_spectrum.eigenvalue,
+                      m.filter_spectrum.star_max, filter_stiffening(growth));
+}
+
+PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit, bool time_levels,
+                        const SpectralScale* filter) {
   if (time_levels) {
     p.damping *= m.time_level_damping_scale;
     return p;
   }
-  p.stiffness *= semi_implicit ? m.filter_spectrum.scale : m.stiffness_spectrum.scale;
+  const SpectralScale& f = filter ? *filter : m.filter_spectrum;
+  p.stiffness *= semi_implicit ? f.scale : m.stiffness_spectrum.scale;
   p.damping *= m.step_damping_scale;
   return p;
 }

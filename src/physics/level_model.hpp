@@ -58,7 +58,17 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law,
 /// is kept and only the damping is scaled to the level's combined limit
 /// (time_level_damping_scale): where damping sets the step, the damping and stiffness modes
 /// apart were 1.6–4.6 times too cautious on the liver.
+/// `filter`: the semi-implicit scale to use instead of the set-up's filter_spectrum
+/// (filter_spectrum_at(), as the strain grows).
 PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit = false,
-                        bool time_levels = false);
+                        bool time_levels = false, const SpectralScale* filter = nullptr);
+
+/// Does the level's tangent stiffness grow with strain (Green–Lagrange)?
+bool stiffens(const LevelModel& m);
+
+/// The semi-implicit scale at tangent growth g (physics/tangent_growth.hpp): its stiffening
+/// share follows filter_stiffening(g); filter_spectrum is the one at g = 0, what the set-up
+/// estimate assumes. A linear law's does not change.
+SpectralScale filter_spectrum_at(const LevelModel& m, double growth);
 
 }  // namespace mrsim

@@ -177,10 +177,14 @@ SpectralScale spectral_scale(double eigenvalue, double star_max) {
   return out;
 }
 
-SpectralScale filter_scale(double filtered, double stiffness, double star_max, bool large_strain) {
+double filter_stiffening(double growth) {
+  return std::max(kFilterStiffening, kStiffeningPerGrowth * growth);
+}
+
+SpectralScale filter_scale(double filtered, double stiffness, double star_max, double stiffening) {
   SpectralScale out{filtered, star_max, 1.0};
-  const double margin = std::max((kSpectralMargin - 1) * std::abs(filtered),
-                                 large_strain ? kFilterStiffening * stiffness : 0.0);
+  const double margin =
+      std::max((kSpectralMargin - 1) * std::abs(filtered), stiffening * stiffness);
   const double with_margin = filtered + margin;
   if (star_max > 0) out.scale = with_margin / (kSemiImplicitShare * star_max);
   return out;

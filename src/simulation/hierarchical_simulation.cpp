@@ -8,6 +8,7 @@
 #include "contact/skin_binding.hpp"
 #include "hierarchy/active_row.hpp"
 #include "hierarchy/ghost_force_transfer.hpp"
+#include "physics/tangent_growth.hpp"
 #include "simulation/diagnostics.hpp"
 #include "time/explicit_updates.hpp"
 
@@ -101,6 +102,9 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   }
   semi_implicit_ = is_semi_implicit(setup.integrator);
   global_step_ = !setup.time_levels;
+  tracks_stiffening_ = semi_implicit_ && global_step_ &&
+                       std::any_of(models_.begin(), models_.end(),
+                                   [](const auto& m) { return stiffens(*m); });
   step_share_ = is_two_step(setup.integrator) ? kTwoStepMidpointShare : 1.0;
   update_inertia();
   stepper_ = std::make_unique<Stepper>(
@@ -145,14 +149,14 @@ void HierarchicalSimulation::restart_integrator() {
 
 void HierarchicalSimulation::advance_frame(std::vector<TimeLevelChange>* changes) {
   if (!time_levels_) {
-    begin_contact_frame(steps_per_frame_ * dt_);
+    begin_frame(steps_per_frame_ * dt_);
     adapt_step();
     run_steps(steps_per_frame_);
     return;
   }
   std::vector<TimeLevelChange>& out = changes ? *changes : changes_scratch_;
   changes_scratch_.clear();
-  begin_contact_frame(frame_dt_);
+  begin_frame(frame_dt_);
   if (contact_) time_levels_->restable();  // the contact near the tools changes stable steps
   run_w_cycle(out);
   ++frames_;
@@ -166,7 +170,7 @@ void HierarchicalSimulation::advance_frame(std::vector<TimeLevelChange>* changes
 void HierarchicalSimulation::advance_frame_part(int part, int parts) {
   if (time_levels_)
     throw std::logic_error("HierarchicalSimulation::advance_frame_part: not with time levels");
-  if (part == 0) begin_contact_frame(steps_per_frame_ * dt_);
+  if (part == 0) begin_frame(steps_per_frame_ * dt_);
   // Within the frame the step only shortens, so that every part stays a whole number of steps.
   adapt_step(part == 0);
   if (parts < 1 || steps_per_frame_ % parts != 0)
@@ -239,7 +243,7 @@ void HierarchicalSimulation::drift_all(int from, int to, double frame_start, dou
 void HierarchicalSimulation::advance(int steps) {
   if (time_levels_)
     throw std::logic_error("HierarchicalSimulation::advance: with time levels use advance_frame");
-  begin_contact_frame(steps * dt_);
+  begin_frame(steps * dt_);
   run_steps(steps);
 }
 
@@ -271,14 +275,16 @@ void HierarchicalSimulation::run_steps(int steps) {
 
 // The broad phase over the coming frame, then the contact forces again from its candidates
 // (the first step must see every vertex that already touches a tool).
-void HierarchicalSimulation::begin_contact_frame(double duration) {
-  if (!contact_) return;
-  {
-    const TaskTimer timer(&tasks_, Task::Contact);
-    contact_->begin_frame(time_, time_ + duration, fields_);
+void HierarchicalSimulation::begin_frame(double duration) {
+  horizon_ = duration;
+  if (contact_) {
+    {
+      const TaskTimer timer(&tasks_, Task::Contact);
+      contact_->begin_frame(time_, time_ + duration, fields_);
+    }
+    update_external(time_);
   }
-  update_external(time_);
-  update_stable_steps();
+  if (contact_ || tracks_stiffening_) update_stable_steps();
 }
 
 void HierarchicalSimulation::remap_skin() {
@@ -549,10 +555,15 @@ void HierarchicalSimulation::update_stable_steps() {
   for (int l = 0; l < L; ++l) {
     loaded_[l].resize(models_[l]->num_points());
     stable_dt_[l].resize(models_[l]->num_points(), 0.0);
-    // One global step: each level's bounds calibrated by its spectrum (LevelModel calibrated());
-    // time levels keep the proven stiffness bounds, the damping calibrated.
+  }
+  // One global step: each level's bounds calibrated by its spectrum (LevelModel calibrated());
+  // time levels keep the proven stiffness bounds, the damping calibrated.
+  const std::vector<SpectralScale> filters = stiffened_filters();
+  for (int l = 0; l < L; ++l) {
+    const SpectralScale* filter = filters.empty() ? nullptr : &filters[l];
     for (int p : lists_->active(l))
-      loaded_[l][p] = calibrated(inertia_[l][p], *models_[l], semi_implicit_, !global_step_);
+      loaded_[l][p] =
+          calibrated(inertia_[l][p], *models_[l], semi_implicit_, !global_step_, filter);
   }
   if (contact_) {
     near_.clear();
@@ -578,6 +589,25 @@ void HierarchicalSimulation::update_stable_steps() {
       stable_dt_[l][p] = dt;
       if (dt < in_force_.dt) in_force_ = {dt, l, p};
     }
+}
+
+// The semi-implicit filter's blocks are probed at rest, so Green–Lagrange stiffening lands on
+// what it leaves explicit: each level's allowance follows its largest tangent growth among the
+// tets it evaluates, now and where the velocities take it by the frame's end
+// (physics/tangent_growth.hpp, spectral_bound.hpp filter_stiffening()). From the state alone,
+// so a resumed run takes the same steps. Empty when not tracked.
+std::vector<SpectralScale> HierarchicalSimulation::stiffened_filters() const {
+  if (!tracks_stiffening_) return {};
+  std::vector<SpectralScale> out(num_levels());
+  for (int l = 0; l < num_levels(); ++l) {
+    const LevelModel& m = *models_[l];
+    const double growth =
+        stiffens(m) ? largest_tangent_growth(m.geo, forces_[l]->tets(), states_[l].u,
+                                             &states_[l].v, horizon_, m.law)
+                    : 0.0;
+    out[l] = filter_spectrum_at(m, growth);
+  }
+  return out;
 }
 
 double HierarchicalSimulation::step() const {

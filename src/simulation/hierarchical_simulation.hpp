@@ -188,7 +188,7 @@ class HierarchicalSimulation {
                const std::vector<const std::vector<std::uint8_t>*>& free,
                std::vector<ActiveTerm>& row);
   void update_external(double t);
-  void begin_contact_frame(double duration);
+  void begin_frame(double duration);
   void run_steps(int steps);
   void adapt_step(bool may_lengthen = true);
   void remap_skin();
@@ -201,6 +201,7 @@ class HierarchicalSimulation {
   void refile_fixed_ghosts();
   void update_inertia();
   void update_stable_steps();
+  std::vector<SpectralScale> stiffened_filters() const;
   void restart_integrator();
   void rebuild_after_topology(double external_time);
   void run_w_cycle(std::vector<TimeLevelChange>& changes);
@@ -251,6 +252,10 @@ class HierarchicalSimulation {
   bool transfer_ = false;  // energy coupling with more than one level
   bool semi_implicit_ = false;
   bool global_step_ = true;  // no time levels: stable steps calibrated by each level's spectrum
+  // Semi-implicit, one global step, a Green–Lagrange level: the filter's stiffening allowance
+  // follows the strain (stiffened_filters()), looking `horizon_` ahead (the frame under way).
+  bool tracks_stiffening_ = false;
+  double horizon_ = 0;
   double step_share_ = 1.0;  // of the kick-drift stable step (Newton-Cotes: half)
   TaskClock tasks_;
   std::vector<std::vector<PointInertia>> inertia_;  // [level][point], active points

@@ -50,16 +50,37 @@ TEST(SpectralBound, LanczosFindsWhatTheSemiImplicitFilterLeavesExplicit) {
 
 TEST(SpectralBound, FilterScaleKeepsTheMarginOnEitherSign) {
   // Positive λ_f: the margin above it; negative (no elastic limit): closer to zero, never past.
-  EXPECT_DOUBLE_EQ(filter_scale(1.0, 4.0, 8.0, false).scale,
+  EXPECT_DOUBLE_EQ(filter_scale(1.0, 4.0, 8.0, 0.0).scale,
                    kSpectralMargin / (kSemiImplicitShare * 8.0));
-  EXPECT_LT(filter_scale(-1.0, 4.0, 8.0, false).scale, 0.0);
-  EXPECT_GT(filter_scale(-1.0, 4.0, 8.0, false).scale, -1.0 / (kSemiImplicitShare * 8.0));
-  EXPECT_EQ(filter_scale(1.0, 4.0, 0.0, false).scale, 1.0);
+  EXPECT_LT(filter_scale(-1.0, 4.0, 8.0, 0.0).scale, 0.0);
+  EXPECT_GT(filter_scale(-1.0, 4.0, 8.0, 0.0).scale, -1.0 / (kSemiImplicitShare * 8.0));
+  EXPECT_EQ(filter_scale(1.0, 4.0, 0.0, 0.0).scale, 1.0);
   // Green–Lagrange: the tangent's growth counted against λ_K, where it exceeds the margin.
-  EXPECT_DOUBLE_EQ(filter_scale(0.1, 4.0, 8.0, true).scale,
+  EXPECT_DOUBLE_EQ(filter_scale(0.1, 4.0, 8.0, kFilterStiffening).scale,
                    (0.1 + kFilterStiffening * 4.0) / (kSemiImplicitShare * 8.0));
-  EXPECT_DOUBLE_EQ(filter_scale(3.0, 4.0, 8.0, true).scale,
+  EXPECT_DOUBLE_EQ(filter_scale(3.0, 4.0, 8.0, kFilterStiffening).scale,
                    kSpectralMargin * 3.0 / (kSemiImplicitShare * 8.0));
+  // During a run the allowance follows the tangent growth, never below the set-up's.
+  EXPECT_EQ(filter_stiffening(0.0), kFilterStiffening);
+  EXPECT_EQ(filter_stiffening(0.5), kFilterStiffening);
+  EXPECT_DOUBLE_EQ(filter_stiffening(2.0), 2.0 * kStiffeningPerGrowth);
+}
+
+TEST(SpectralBound, FilterSpectrumFollowsTheGrowthOfAStiffeningLawOnly) {
+  MaterialLaw law = law_with(5e4, 1e4);
+  const TetMesh mesh = jittered_box(3, 2, 2, 0.2, 2);
+  const LevelModel cauchy = build_level_model(mesh, law, true);
+  EXPECT_EQ(filter_spectrum_at(cauchy, 2.0).scale, cauchy.filter_spectrum.scale);
+  law.strain = StrainMeasure::GreenLagrange;
+  const LevelModel green = build_level_model(mesh, law, true);
+  EXPECT_DOUBLE_EQ(filter_spectrum_at(green, 0.0).scale, green.filter_spectrum.scale);
+  const double lambda_f = green.filter_spectrum.eigenvalue;
+  const double lambda_k = green.stiffness_spectrum.eigenvalue;
+  const double grown = filter_spectrum_at(green, 2.0).scale;
+  EXPECT_GT(grown, green.filter_spectrum.scale);
+  EXPECT_NEAR(grown * kSemiImplicitShare * green.filter_spectrum.star_max,
+              lambda_f + std::max((kSpectralMargin - 1) * std::abs(lambda_f), 2.0 * kStiffeningPerGrowth * lambda_k),
+              1e-9 * lambda_k);
 }
 
 TEST(SpectralBound, EmptyAndZeroOperatorsGiveZero) {

@@ -1,0 +1,32 @@
+#pragma once
+// How far a Green–Lagrange tet's tangent stiffness has grown beyond the rest stiffness that the
+// stable-step bounds are built from (physics/stable_step_bound.hpp; docs/integrators.md "The
+// stable step"). With F = I + ∇u, E = ½(FᵀF − I) and S = λ tr(E) I + 2μE, a displacement δu
+// changes the stress by δP = δF S + F (λ tr(δE) I + 2μ δE), δE = sym(Fᵀ δF). Its energy
+// δF:δP is at most
+//   material part:  σ_max(F)² times the rest bound d_t (δE ≤ σ_max(F) δF, term by term), and
+//   geometric part: max(0, s_max(S)) |δF|² ≤ max(0, s_max(S)) / (λ + 2μ) × d_t,
+// since d_t ≥ V (λ + 2μ) σ_max(∇N)². So the tangent is below (1 + g) d_t with
+//   g = σ_max(F)² − 1 + max(0, s_max(S)) / (λ + 2μ) = 2 e_max + max(0, λ tr E + 2μ e_max)/(λ+2μ),
+// e_max the largest eigenvalue of E; clamped at 0 (compression softens). A rigid motion has
+// g = 0: rotation alone never shortens a step.
+#include <span>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "physics/material_law.hpp"
+#include "physics/tet_geometry.hpp"
+
+namespace mrsim {
+
+/// g of one tet with displacement gradient `grad_u`, with the law's bounding λ and μ
+/// (MaterialLaw::bound_lambda/bound_mu on a calibrated level).
+double tangent_growth(const Mat3& grad_u, const MaterialLaw& law);
+
+/// The largest g over `tets` of a level at displacements `u` and, with velocities `v`, also at
+/// u + horizon·v (where the strain heads within the horizon); 0 for an empty list.
+double largest_tangent_growth(const TetGeometry& geo, std::span<const int> tets,
+                              const std::vector<Vec3>& u, const std::vector<Vec3>* v,
+                              double horizon, const MaterialLaw& law);
+
+}  // namespace mrsim

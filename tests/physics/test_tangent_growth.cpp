@@ -1,0 +1,129 @@
+// The tangent growth g of a Green–Lagrange tet (physics/tangent_growth.hpp): the stiffness at a
+// deformed state stays below (1 + g) times the rest energy bound d_t, a rigid motion does not
+// grow it, and the closed form of a uniaxial stretch. The semi-implicit step follows g
+// (physics/spectral_bound.hpp filter_stiffening()), so an optimistic g is an unstable run.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <random>
+
+#include "physics/dense_spectrum.hpp"
+#include "physics/stress.hpp"
+#include "physics/tangent_growth.hpp"
+
+using namespace mrsim;
+using namespace mrsim::test_support;
+
+namespace {
+
+MaterialLaw green(double lambda, double mu) {
+  MaterialLaw law = law_with(lambda, mu);
+  law.strain = StrainMeasure::GreenLagrange;
+  return law;
+}
+
+Mat3 rotation(double a, double b, double c) {
+  return (Eigen::AngleAxisd(a, Vec3::UnitZ()) * Eigen::AngleAxisd(b, Vec3::UnitY()) *
+          Eigen::AngleAxisd(c, Vec3::UnitX()))
+      .toRotationMatrix();
+}
+
+// Nodal forces' derivative (12×12, symmetrised) of one tet at displacement gradient G, by
+// central differences: the tangent stiffness whose largest eigenvalue sets the step.
+Eigen::Matrix<double, 12, 12> tangent(const TetGradients& g, double volume, const Mat3& G,
+                                      const MaterialLaw& law) {
+  auto forces = [&](const Mat3& Gu) {
+    const Mat3 P = green_piola(Gu, nullptr, law);
+    Eigen::Matrix<double, 12, 1> f;
+    for (int a = 0; a < 4; ++a) f.segment<3>(3 * a) = volume * P * g[a];
+    return f;
+  };
+  const double h = 1e-7;
+  Eigen::Matrix<double, 12, 12> K;
+  for (int b = 0; b < 4; ++b)
+    for (int j = 0; j < 3; ++j) {
+      const Mat3 dG = h * Vec3::Unit(j) * g[b].transpose();  // u_b += h e_j
+      K.col(3 * b + j) = (forces(G + dG) - forces(G - dG)) / (2 * h);
+    }
+  return 0.5 * (K + K.transpose());
+}
+
+double top(const Eigen::Matrix<double, 12, 12>& K) {
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>>(K, Eigen::EigenvaluesOnly)
+      .eigenvalues()
+      .maxCoeff();
+}
+
+}  // namespace
+
+TEST(TangentGrowth, RigidRotationDoesNotGrow) {
+  const MaterialLaw law = green(5e4, 1e4);
+  for (double a : {0.3, 1.2, 2.9})
+    EXPECT_NEAR(tangent_growth(rotation(a, 0.5 * a, -a) - Mat3::Identity(), law), 0.0, 1e-12);
+}
+
+TEST(TangentGrowth, UniaxialStretchIsThreeTimesTheStrain) {
+  // E = ½(s² − 1) e_x e_x: σ_max(F)² − 1 = 2E and s_max(S) = (λ + 2μ) E, so g = 3E.
+  const MaterialLaw law = green(5e4, 1e4);
+  for (double s : {1.05, 1.2, 1.5}) {
+    Mat3 G = Mat3::Zero();
+    G(0, 0) = s - 1;
+    EXPECT_NEAR(tangent_growth(G, law), 1.5 * (s * s - 1), 1e-12);
+  }
+  Mat3 squeeze = Mat3::Zero();
+  squeeze(0, 0) = -0.2;  // compression softens: no growth
+  EXPECT_NEAR(tangent_growth(squeeze, law), 0.0, 1e-8);
+}
+
+TEST(TangentGrowth, DeformedTangentStaysBelowTheGrownRestBound) {
+  // λ_max(K_t(F)) ≤ (1 + g) d_t for random rotations and stretches of every tet of a jittered
+  // mesh, nearly incompressible or not; and the growth is real (the deformed tangent of the
+  // largest stretches exceeds the rest one by more than half), so the bound is not vacuous.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> angle(-3.0, 3.0), stretch(0.7, 1.5);
+  for (double lambda : {0.0, 5e4, 5e5}) {
+    const MaterialLaw law = green(lambda, 1e4);
+    const LevelModel m = build_level_model(jittered_box(2, 2, 2, 0.3, 3), law);
+    double most = 0;
+    for (int t = 0; t < m.num_tets(); ++t) {
+      const TetGradients& g = m.geo.grad[t];
+      const double rest = top(tangent(g, m.geo.volume[t], Mat3::Zero(), law));
+      for (int trial = 0; trial < 4; ++trial) {
+        const Vec3 s(stretch(rng), stretch(rng), stretch(rng));
+        const Mat3 F =
+            rotation(angle(rng), angle(rng), angle(rng)) * s.asDiagonal() *
+            rotation(angle(rng), angle(rng), angle(rng)).transpose();
+        const Mat3 G = F - Mat3::Identity();
+        const double growth = tangent_growth(G, law);
+        const double deformed = top(tangent(g, m.geo.volume[t], G, law));
+        EXPECT_LE(deformed, (1 + growth) * m.bounds.stiffness[t] * (1 + 1e-6))
+            << "lambda " << lambda << " tet " << t << " g " << growth;
+        most = std::max(most, deformed / rest);
+      }
+    }
+    EXPECT_GT(most, 1.5) << "lambda " << lambda;
+  }
+}
+
+TEST(TangentGrowth, LargestOverTetsLooksAheadWithTheVelocities) {
+  const MaterialLaw law = green(5e4, 1e4);
+  const TetMesh mesh = jittered_box(2, 2, 2, 0.2, 5);
+  const LevelModel m = build_level_model(mesh, law);
+  std::vector<int> all(m.num_tets());
+  for (int t = 0; t < m.num_tets(); ++t) all[t] = t;
+  const int n = m.num_points();
+  std::vector<Vec3> u(n), v(n);
+  for (int i = 0; i < n; ++i) {
+    const Vec3& X = mesh.points[i];
+    u[i] = Vec3(0.1 * X.x(), 0, 0);   // 10 % stretch along x
+    v[i] = Vec3(1.0 * X.x(), 0, 0);   // stretching at 100 %/s
+  }
+  const double now = largest_tangent_growth(m.geo, all, u, nullptr, 0.0, law);
+  EXPECT_NEAR(now, 1.5 * (1.1 * 1.1 - 1), 1e-9);
+  // 0.1 s ahead the stretch is 20 %; a receding velocity keeps the present value.
+  EXPECT_NEAR(largest_tangent_growth(m.geo, all, u, &v, 0.1, law), 1.5 * (1.2 * 1.2 - 1), 1e-9);
+  for (Vec3& w : v) w = -w;
+  EXPECT_NEAR(largest_tangent_growth(m.geo, all, u, &v, 0.05, law), now, 1e-9);
+  EXPECT_EQ(largest_tangent_growth(m.geo, {}, u, &v, 0.1, law), 0.0);
+}
