@@ -19,17 +19,10 @@ double tangent_growth(const Mat3& grad_u, const MaterialLaw& law) {
 }
 
 double largest_tangent_growth(const TetGeometry& geo, std::span<const int> tets,
-                              const std::vector<Vec3>& u, const std::vector<Vec3>* v,
-                              double horizon, const MaterialLaw& law) {
+                              const std::vector<Vec3>& u, const MaterialLaw& law) {
   double top = 0;
-  for (const int t : tets) {
-    const Mat3 G = tet_gradient(geo.grad[t], geo.tets[t], u.data());
-    top = std::max(top, tangent_growth(G, law));
-    if (v) {
-      const Mat3 ahead = G + horizon * tet_gradient(geo.grad[t], geo.tets[t], v->data());
-      top = std::max(top, tangent_growth(ahead, law));
-    }
-  }
+  for (const int t : tets)
+    top = std::max(top, tangent_growth(tet_gradient(geo.grad[t], geo.tets[t], u.data()), law));
   return top;
 }
 

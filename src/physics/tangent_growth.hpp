@@ -23,10 +23,8 @@ namespace mrsim {
 /// (MaterialLaw::bound_lambda/bound_mu on a calibrated level).
 double tangent_growth(const Mat3& grad_u, const MaterialLaw& law);
 
-/// The largest g over `tets` of a level at displacements `u` and, with velocities `v`, also at
-/// u + horizon·v (where the strain heads within the horizon); 0 for an empty list.
+/// The largest g over `tets` of a level at displacements `u`; 0 for an empty list.
 double largest_tangent_growth(const TetGeometry& geo, std::span<const int> tets,
-                              const std::vector<Vec3>& u, const std::vector<Vec3>* v,
-                              double horizon, const MaterialLaw& law);
+                              const std::vector<Vec3>& u, const MaterialLaw& law);
 
 }  // namespace mrsim

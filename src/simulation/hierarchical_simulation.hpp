@@ -253,9 +253,8 @@ class HierarchicalSimulation {
   bool semi_implicit_ = false;
   bool global_step_ = true;  // no time levels: stable steps calibrated by each level's spectrum
   // Semi-implicit, one global step, a Green–Lagrange level: the filter's stiffening allowance
-  // follows the strain (stiffened_filters()), looking `horizon_` ahead (the frame under way).
+  // follows the strain (stiffened_filters()).
   bool tracks_stiffening_ = false;
-  double horizon_ = 0;
   double step_share_ = 1.0;  // of the kick-drift stable step (Newton-Cotes: half)
   TaskClock tasks_;
   std::vector<std::vector<PointInertia>> inertia_;  // [level][point], active points
