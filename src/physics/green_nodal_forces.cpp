@@ -6,11 +6,14 @@ namespace mrsim {
 
 #include "physics/green_block_kernel.inl"
 
-GreenKernelData green_kernel_data(const LevelModel& m) {
-  const MaterialLaw& law = m.law;
-  GreenKernelData d{reinterpret_cast<const double(*)[4][3]>(m.geo.grad.data()),
-                    reinterpret_cast<const int(*)[4]>(m.geo.tets.data()),
-                    m.geo.volume.data(),
+namespace {
+
+// The kernel's view of tet arrays (the level's own or a packed copy) with the level's material.
+GreenKernelData kernel_data(const MaterialLaw& law, const Tet* tets, const TetGradients* grad,
+                            const double* volume) {
+  GreenKernelData d{reinterpret_cast<const double(*)[4][3]>(grad),
+                    reinterpret_cast<const int(*)[4]>(tets),
+                    volume,
                     law.lambda * law.scales.lambda,
                     law.phi * law.scales.lambda,
                     {},
@@ -23,10 +26,16 @@ GreenKernelData green_kernel_data(const LevelModel& m) {
   return d;
 }
 
-namespace {
-
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(TetGradients) == 12 * sizeof(double) &&
               sizeof(Tet) == 4 * sizeof(int));
+
+}  // namespace
+
+GreenKernelData green_kernel_data(const LevelModel& m) {
+  return kernel_data(m.law, m.geo.tets.data(), m.geo.grad.data(), m.geo.volume.data());
+}
+
+namespace {
 
 #if defined(MRSIM_AVX2_KERNEL)
 // Chosen once: the AVX2 build of the same kernel where the processor has it (the same bits:
@@ -57,10 +66,10 @@ void green_nodal_forces_baseline(const GreenKernelData& d, const int* tets, int 
   every_block(d, tets, count, u, v, StoreSink{out});
 }
 
-void green_scatter_forces(const LevelModel& m, const int* tets, int count, const Vec3* u,
-                          const Vec3* v, const double* weight, const unsigned char* mask,
-                          Vec3* f, int first, int last) {
-  const GreenKernelData d = green_kernel_data(m);
+namespace {
+
+void scatter(const GreenKernelData& d, const int* tets, int count, const Vec3* u, const Vec3* v,
+             const double* weight, const unsigned char* mask, Vec3* f, int first, int last) {
   const auto* u3 = reinterpret_cast<const double(*)[3]>(u);
   const auto* v3 = reinterpret_cast<const double(*)[3]>(v);
   const GreenScatterTarget target{weight, mask, reinterpret_cast<double(*)[3]>(f), first, last};
@@ -68,6 +77,25 @@ void green_scatter_forces(const LevelModel& m, const int* tets, int count, const
   if (use_avx2()) return green_scatter_forces_avx2(d, tets, count, u3, v3, target);
 #endif
   green_scatter_forces_baseline(d, tets, count, u3, v3, target);
+}
+
+}  // namespace
+
+void green_scatter_forces(const LevelModel& m, const int* tets, int count, const Vec3* u,
+                          const Vec3* v, const double* weight, const unsigned char* mask,
+                          Vec3* f, int first, int last) {
+  scatter(green_kernel_data(m), tets, count, u, v, weight, mask, f, first, last);
+}
+
+void green_scatter_packed(const LevelModel& m, PackedTets& packed, const Vec3* u, const Vec3* v,
+                          const double* weight, const unsigned char* mask, Vec3* f) {
+  const int n = packed.count;
+  if (weight)
+    for (int k = 0; k < n; ++k) packed.weight[k] = weight[packed.source[k]];
+  const GreenKernelData d =
+      kernel_data(m.law, packed.tets.data(), packed.grad.data(), packed.volume.data());
+  scatter(d, packed.order.data(), n, u, v, weight ? packed.weight.data() : nullptr, mask, f, 0,
+          1 << 30);
 }
 
 void green_scatter_forces_baseline(const GreenKernelData& d, const int* tets, int count,

@@ -8,6 +8,7 @@
 // where the processor has it, with the same bits (green_block_kernel.inl).
 #include "physics/green_kernel_data.hpp"
 #include "physics/level_model.hpp"
+#include "physics/packed_tets.hpp"
 
 namespace mrsim {
 
@@ -25,6 +26,11 @@ void green_nodal_forces(const LevelModel& m, const int* tets, int count, const V
 void green_scatter_forces(const LevelModel& m, const int* tets, int count, const Vec3* u,
                           const Vec3* v, const double* weight, const unsigned char* mask,
                           Vec3* f, int first = 0, int last = 1 << 30);
+
+/// green_scatter_forces() over the packed tets of `m` (physics/packed_tets.hpp), with the level's
+/// per-tet `weight` (null: 1) gathered into the packed order: the same bits as over their ids.
+void green_scatter_packed(const LevelModel& m, PackedTets& packed, const Vec3* u, const Vec3* v,
+                          const double* weight, const unsigned char* mask, Vec3* f);
 
 /// The level's arrays as the kernel builds read them (green_kernel_data.hpp): the same
 /// pass through green_nodal_forces_baseline() or green_nodal_forces_avx2() directly.

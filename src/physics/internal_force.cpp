@@ -63,7 +63,10 @@ void tet_pass_and_scatter(const LevelModel& m, IndexSet points, IndexSet tets,
     if (mask) mask[points[k]] = 1;
   }
   if (m.law.strain == StrainMeasure::GreenLagrange) {
-    green_scatter_forces(m, ids, tets.count, u, v, weight, mask, f);
+    if (ws.packed.packs(tets))
+      green_scatter_packed(m, ws.packed, u, v, weight, mask, f);
+    else
+      green_scatter_forces(m, ids, tets.count, u, v, weight, mask, f);
   } else {
     TetGradients tf;
     for (int q = 0; q < tets.count; ++q) {

@@ -8,6 +8,7 @@
 
 #include "core/index_set.hpp"
 #include "physics/level_model.hpp"
+#include "physics/packed_tets.hpp"
 
 namespace mrsim {
 
@@ -17,6 +18,9 @@ struct ForceWorkspace {
   std::vector<int> all_tets;             // 0 .. tets-1, when a pass covers every tet
   std::vector<unsigned char> point_mask; // the points a pass writes (zero between calls)
   std::vector<std::vector<int>> thread_tets;  // each thread's tets (threaded Green pass)
+  // A tet list's data copied contiguously (its owner packs it at topology changes): the
+  // one-thread Green–Lagrange pass over that list reads the copy (physics/packed_tets.hpp).
+  PackedTets packed;
   /// Sizes the arrays for `model`; the per-tet forces only with `per_tet`.
   void reserve_for(const LevelModel& model, bool per_tet = false);
 };

@@ -40,6 +40,12 @@ void LevelForceField::refresh_tets() {
   } else if (points_ && model_.law.strain == StrainMeasure::GreenLagrange) {
     live_tets(model_, IndexSet::of(*points_), tet_mark_, tets_);
   }
+  // Part of the level: its tets streamed from a contiguous copy (physics/packed_tets.hpp).
+  if (model_.law.strain == StrainMeasure::GreenLagrange && !tets_.empty() &&
+      static_cast<int>(tets_.size()) < model_.num_tets())
+    ws_.packed.pack(model_.geo, tets_);
+  else
+    ws_.packed.clear();
 }
 
 // A level without ghosts has only whole tets (all four vertices active, invariant I2), so the

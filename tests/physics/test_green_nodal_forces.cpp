@@ -161,8 +161,37 @@ TEST(GreenScatterForces, BitIdenticalToTheGatherOfGreenPiola) {
         EXPECT_EQ(std::memcmp(expected.data(), f.data(), f.size() * sizeof(Vec3)), 0)
             << name << (weighted ? " weighted" : "") << (damped ? " damped" : "");
       }
+      // The same list from its contiguous copy (physics/packed_tets.hpp), the level's weights
+      // gathered into it: the same bits.
+      PackedTets packed;
+      packed.pack(m.geo, list);
+      std::vector<Vec3> f(m.num_points(), Vec3::Zero());
+      green_scatter_packed(m, packed, u.data(), v.data(), weighted ? weight.data() : nullptr,
+                           mask.data(), f.data());
+      EXPECT_EQ(std::memcmp(expected.data(), f.data(), f.size() * sizeof(Vec3)), 0)
+          << "packed" << (weighted ? " weighted" : "") << (damped ? " damped" : "");
     }
   }
+}
+
+TEST(PackedTets, RecognisesOnlyTheListItPacked) {
+  const LevelModel m = build_level_model(make_box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), 2, 2, 2),
+                                         MaterialLaw{});
+  const std::vector<int> list{1, 4, 5, 9, 30};
+  PackedTets packed;
+  EXPECT_FALSE(packed.packs(IndexSet::of(list)));
+  packed.pack(m.geo, list);
+  EXPECT_TRUE(packed.packs(IndexSet::of(list)));
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_EQ(packed.tets[k], m.geo.tets[list[k]]);
+    EXPECT_EQ(packed.volume[k], m.geo.volume[list[k]]);
+    EXPECT_EQ(packed.order[k], k);
+  }
+  const std::vector<int> same_ids = list;  // equal, but another list: not recognised
+  EXPECT_FALSE(packed.packs(IndexSet::of(same_ids)));
+  EXPECT_FALSE(packed.packs(IndexSet{list.data(), 4}));
+  packed.clear();
+  EXPECT_FALSE(packed.packs(IndexSet::of(list)));
 }
 
 }  // namespace

@@ -1,0 +1,33 @@
+#include "physics/packed_tets.hpp"
+
+#include <numeric>
+
+namespace mrsim {
+
+void PackedTets::pack(const TetGeometry& geo, const std::vector<int>& ids) {
+  source = ids.data();
+  count = static_cast<int>(ids.size());
+  tets.resize(count);
+  grad.resize(count);
+  volume.resize(count);
+  weight.resize(count);
+  order.resize(count);
+  for (int k = 0; k < count; ++k) {
+    tets[k] = geo.tets[ids[k]];
+    grad[k] = geo.grad[ids[k]];
+    volume[k] = geo.volume[ids[k]];
+  }
+  std::iota(order.begin(), order.end(), 0);
+}
+
+void PackedTets::clear() {
+  source = nullptr;
+  count = 0;
+  tets.clear();
+  grad.clear();
+  volume.clear();
+  weight.clear();
+  order.clear();
+}
+
+}  // namespace mrsim

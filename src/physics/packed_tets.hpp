@@ -1,0 +1,31 @@
+#pragma once
+// The tets a partly simulated level evaluates, copied contiguously (vertices, ∇N, volume) at each
+// topology change, in their ascending id order. The one-thread Green–Lagrange pass then streams
+// them instead of striding through the whole level's arrays between other levels' passes: on the
+// bundled liver_probe the adaptive run's kernel took 74 ns per tet update against 61 for the
+// uniform finest level (issue 17 point 1; docs/performance.md). Same tets, same order, so each
+// point receives its terms in the same order: the same bits.
+#include <vector>
+
+#include "core/index_set.hpp"
+#include "physics/tet_geometry.hpp"
+
+namespace mrsim {
+
+struct PackedTets {
+  const int* source = nullptr;  // the list packed (its data), to recognise it in a pass
+  int count = 0;
+  std::vector<Tet> tets;
+  std::vector<TetGradients> grad;
+  std::vector<double> volume;
+  std::vector<double> weight;  // per packed tet, filled from the level's weights at each pass
+  std::vector<int> order;      // 0 .. count-1: the kernel's tet list
+
+  /// Copies the tets `ids` (ascending) of `geo`; `ids` must stay the list passed in later.
+  void pack(const TetGeometry& geo, const std::vector<int>& ids);
+  void clear();
+  /// Is `tets` the list packed?
+  bool packs(IndexSet tets) const { return count > 0 && tets.ids == source && tets.count == count; }
+};
+
+}  // namespace mrsim
