@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "io/temp_dir.hpp"
 #include "mesh/box_mesh.hpp"
 #include "simulation/level_consistency.hpp"
 
@@ -17,8 +18,8 @@ namespace fs = std::filesystem;
 
 // A scenario whose levels name `files` (created empty: only their identity matters here).
 Scenario with_files(const std::vector<std::string>& files) {
-  const fs::path dir = fs::temp_directory_path() / "mrsim_level_consistency";
-  fs::create_directories(dir);
+  static const mrsim::test::TempDir scratch;  // removed when the tests end
+  const fs::path& dir = scratch.path();
   Scenario sc;
   for (const std::string& f : files) {
     std::ofstream(dir / f) << "";

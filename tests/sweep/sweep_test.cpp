@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "io/temp_dir.hpp"
 #include "scenario/yaml_to_json.hpp"
 #include "sweep/case_folder.hpp"
 #include "sweep/case_runner.hpp"
@@ -27,13 +28,6 @@ std::string error_of(const std::string& text) {
     return e.what();
   }
   return "";
-}
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mrsim_sweep_test_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
 }
 
 void write(const fs::path& path, const std::string& text) {
@@ -146,7 +140,8 @@ TEST(SweepSpec, KeyInProductAndZipIsAnError) {
 }
 
 TEST(CaseFolder, ResumeDecisionFromStatusFiles) {
-  const fs::path dir = fresh_dir("resume");
+  const mrsim::test::TempDir tmp;  // removed with the test
+  const fs::path& dir = tmp.path();
   EXPECT_EQ(case_state(case_folder(dir, 0)), CaseState::pending);
   fs::create_directories(case_folder(dir, 1));
   EXPECT_EQ(case_state(case_folder(dir, 1)), CaseState::interrupted);
@@ -174,7 +169,8 @@ TEST(CaseFolder, ResumeDecisionFromStatusFiles) {
 // A run stopped cleanly by SIGINT/SIGTERM (a time limit) is interrupted, not failed; with the
 // checkpoint its run left, it goes on (mrsim run --resume) instead of starting again.
 TEST(CaseFolder, StoppedRunsWithACheckpointGoOn) {
-  const fs::path dir = fresh_dir("go_on");
+  const mrsim::test::TempDir tmp;  // removed with the test
+  const fs::path& dir = tmp.path();
   for (int k = 0; k < 4; ++k) {
     for (const char* f : {"checkpoint.h5", "scenario.yaml", "log.h5"})
       write(case_folder(dir, k) / f, "x");
@@ -197,7 +193,8 @@ TEST(CaseFolder, StoppedRunsWithACheckpointGoOn) {
 }
 
 TEST(CaseFolder, PrepareClearsLeftOversAndWritesParams) {
-  const fs::path dir = fresh_dir("prepare");
+  const mrsim::test::TempDir tmp;  // removed with the test
+  const fs::path& dir = tmp.path();
   write(case_folder(dir, 0) / "log.h5", "stale");
   prepare_case_folder(case_folder(dir, 0), {0, {{"material.lambda", json(5.0e+4)}}});
   EXPECT_FALSE(fs::exists(case_folder(dir, 0) / "log.h5"));
@@ -209,7 +206,8 @@ TEST(ResultsTable, HeaderMatchesThePlotFixture) {
   std::ifstream in(fs::path(MRSIM_SOURCE_DIR) / "tests/data/sweep/results.csv");
   std::string fixture_header;
   std::getline(in, fixture_header);
-  const fs::path dir = fresh_dir("fixture_header");
+  const mrsim::test::TempDir tmp;  // removed with the test
+  const fs::path& dir = tmp.path();
   fs::create_directories(case_folder(dir, 0));
   write_status(case_folder(dir, 0), {0, "", 1.0});
   write(case_folder(dir, 0) / "summary.json", "{\"final_active\": [9, 4, 77, 1341]}");
@@ -221,7 +219,8 @@ TEST(ResultsTable, HeaderMatchesThePlotFixture) {
 }
 
 TEST(ResultsTable, RowsFromFakeCaseFolders) {
-  const fs::path dir = fresh_dir("rows");
+  const mrsim::test::TempDir tmp;  // removed with the test
+  const fs::path& dir = tmp.path();
   fs::create_directories(case_folder(dir, 0));
   write_status(case_folder(dir, 0), {0, "", 2.0});
   write(case_folder(dir, 0) / "summary.json",
