@@ -2,11 +2,6 @@
 
 namespace mrsim {
 
-Vec3 interpolate(const Vec3* values, const Tet& tet, const Bary& b) {
-  return b[0] * values[tet[0]] + b[1] * values[tet[1]] + b[2] * values[tet[2]] +
-         b[3] * values[tet[3]];
-}
-
 namespace {
 
 // Each ghost's sources straight from the links (Embedding::source), not through its tet.
