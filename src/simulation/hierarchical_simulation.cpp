@@ -274,7 +274,8 @@ void HierarchicalSimulation::run_steps(int steps) {
 }
 
 // The broad phase over the coming frame, then the contact forces again from its candidates
-// (the first step must see every vertex that already touches a tool).
+// (the first step must see every vertex that already touches a tool); then the stable steps in
+// force, which follow the skin near the tools and Green–Lagrange's growth (stiffened_filters()).
 void HierarchicalSimulation::begin_frame(double duration) {
   if (contact_) {
     {
