@@ -87,8 +87,9 @@ SpectralScale filter_spectrum_at(const LevelModel& m, double growth) {
 }
 
 PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit, bool time_levels,
-                        const SpectralScale* filter) {
+                        const SpectralScale* filter, double growth) {
   if (time_levels) {
+    if (semi_implicit) p.stiffness *= time_level_stiffening(growth);
     p.damping *= m.time_level_damping_scale;
     return p;
   }

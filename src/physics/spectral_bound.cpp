@@ -181,6 +181,10 @@ double filter_stiffening(double growth) {
   return std::max(kFilterStiffening, kStiffeningPerGrowth * growth);
 }
 
+double time_level_stiffening(double growth) {
+  return 1.0 + kStiffeningPerGrowth * std::max(0.0, growth) / kSemiImplicitShare;
+}
+
 SpectralScale filter_scale(double filtered, double stiffness, double star_max, double stiffening) {
   SpectralScale out{filtered, star_max, 1.0};
   const double margin =

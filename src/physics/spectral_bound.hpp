@@ -75,6 +75,14 @@ inline constexpr double kStiffeningPerGrowth = 0.3;
 /// The share of λ_K allowed for stiffening at tangent growth g.
 double filter_stiffening(double growth);
 
+/// Semi-implicit with time levels, the factor on a point's proven stiffness bound d at tangent
+/// growth g: the rule counts kSemiImplicitShare d at rest, and the growth adds up to g d that
+/// the filter's blocks, probed at rest, leave explicit; of it kStiffeningPerGrowth g d counts,
+/// as for the global step: 1 + kStiffeningPerGrowth g / kSemiImplicitShare. Without it, two
+/// whole runs held at exactly courant × 1.00 (docs/stability_matrix.md). Explicit time levels
+/// need nothing: the proven bounds' slack covered g up to 1.2 (1.24–1.54 there).
+double time_level_stiffening(double growth);
+
 /// The semi-implicit scale of a level's stiffness bounds: its largest point bound then stands
 /// for λ_f + max((kSpectralMargin − 1)|λ_f|, stiffening λ_K), with λ_f =
 /// largest_filtered_eigenvalue (negative: no elastic limit), λ_K = `stiffness` and `stiffening`

@@ -102,7 +102,7 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   }
   semi_implicit_ = is_semi_implicit(setup.integrator);
   global_step_ = !setup.time_levels;
-  tracks_stiffening_ = semi_implicit_ && global_step_ &&
+  tracks_stiffening_ = semi_implicit_ &&
                        std::any_of(models_.begin(), models_.end(),
                                    [](const auto& m) { return stiffens(*m); });
   step_share_ = is_two_step(setup.integrator) ? kTwoStepMidpointShare : 1.0;
@@ -157,7 +157,8 @@ void HierarchicalSimulation::advance_frame(std::vector<TimeLevelChange>* changes
   std::vector<TimeLevelChange>& out = changes ? *changes : changes_scratch_;
   changes_scratch_.clear();
   begin_frame(frame_dt_);
-  if (contact_) time_levels_->restable();  // the contact near the tools changes stable steps
+  // The contact near the tools and Green–Lagrange's growth change stable steps.
+  if (contact_ || tracks_stiffening_) time_levels_->restable();
   run_w_cycle(out);
   ++frames_;
   time_ = static_cast<double>(frames_) * frame_dt_;
@@ -275,7 +276,7 @@ void HierarchicalSimulation::run_steps(int steps) {
 
 // The broad phase over the coming frame, then the contact forces again from its candidates
 // (the first step must see every vertex that already touches a tool); then the stable steps in
-// force, which follow the skin near the tools and Green–Lagrange's growth (stiffened_filters()).
+// force, which follow the skin near the tools and Green–Lagrange's growth (tangent_growths()).
 void HierarchicalSimulation::begin_frame(double duration) {
   if (contact_) {
     {
@@ -557,13 +558,15 @@ void HierarchicalSimulation::update_stable_steps() {
     stable_dt_[l].resize(models_[l]->num_points(), 0.0);
   }
   // One global step: each level's bounds calibrated by its spectrum (LevelModel calibrated());
-  // time levels keep the proven stiffness bounds, the damping calibrated.
-  const std::vector<SpectralScale> filters = stiffened_filters();
+  // time levels keep the proven stiffness bounds, the damping calibrated. Both follow
+  // Green–Lagrange's growth when semi-implicit.
+  const std::vector<double> growth = tangent_growths();
   for (int l = 0; l < L; ++l) {
-    const SpectralScale* filter = filters.empty() ? nullptr : &filters[l];
+    const double g = growth.empty() ? 0.0 : growth[l];
+    const SpectralScale filter = filter_spectrum_at(*models_[l], g);
+    const SpectralScale* f = growth.empty() ? nullptr : &filter;
     for (int p : lists_->active(l))
-      loaded_[l][p] =
-          calibrated(inertia_[l][p], *models_[l], semi_implicit_, !global_step_, filter);
+      loaded_[l][p] = calibrated(inertia_[l][p], *models_[l], semi_implicit_, !global_step_, f, g);
   }
   if (contact_) {
     near_.clear();
@@ -592,20 +595,19 @@ void HierarchicalSimulation::update_stable_steps() {
 }
 
 // The semi-implicit filter's blocks are probed at rest, so Green–Lagrange stiffening lands on
-// what it leaves explicit: each level's allowance follows its largest tangent growth among the
-// tets it evaluates, at each frame start and topology change (physics/tangent_growth.hpp,
-// spectral_bound.hpp filter_stiffening()). Not extrapolated with the velocities: just after a
-// split the woken points' interpolated velocities made g a frame ahead 12.7 on the little man
-// (0.9 now). From the state alone, so a resumed run takes the same steps. Empty when not
-// tracked.
-std::vector<SpectralScale> HierarchicalSimulation::stiffened_filters() const {
+// what it leaves explicit: each level's largest tangent growth g among the tets it evaluates,
+// at each frame start and topology change (physics/tangent_growth.hpp), sets its allowance
+// (spectral_bound.hpp filter_stiffening(), time_level_stiffening()). Not extrapolated with the
+// velocities: just after a split the woken points' interpolated velocities made g a frame ahead
+// 12.7 on the little man (0.9 now). From the state alone, so a resumed run takes the same
+// steps. Empty when not tracked.
+std::vector<double> HierarchicalSimulation::tangent_growths() const {
   if (!tracks_stiffening_) return {};
-  std::vector<SpectralScale> out(num_levels());
+  std::vector<double> out(num_levels(), 0.0);
   for (int l = 0; l < num_levels(); ++l) {
     const LevelModel& m = *models_[l];
-    const double growth =
-        stiffens(m) ? largest_tangent_growth(m.geo, forces_[l]->tets(), states_[l].u, m.law) : 0.0;
-    out[l] = filter_spectrum_at(m, growth);
+    if (stiffens(m))
+      out[l] = largest_tangent_growth(m.geo, forces_[l]->tets(), states_[l].u, m.law);
   }
   return out;
 }

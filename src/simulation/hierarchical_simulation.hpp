@@ -201,7 +201,7 @@ class HierarchicalSimulation {
   void refile_fixed_ghosts();
   void update_inertia();
   void update_stable_steps();
-  std::vector<SpectralScale> stiffened_filters() const;
+  std::vector<double> tangent_growths() const;
   void restart_integrator();
   void rebuild_after_topology(double external_time);
   void run_w_cycle(std::vector<TimeLevelChange>& changes);
@@ -252,8 +252,8 @@ class HierarchicalSimulation {
   bool transfer_ = false;  // energy coupling with more than one level
   bool semi_implicit_ = false;
   bool global_step_ = true;  // no time levels: stable steps calibrated by each level's spectrum
-  // Semi-implicit, one global step, a Green–Lagrange level: the filter's stiffening allowance
-  // follows the strain (stiffened_filters()).
+  // Semi-implicit with a Green–Lagrange level: the stable steps follow the strain
+  // (tangent_growths(); the filter's allowance, or the time levels' bounds).
   bool tracks_stiffening_ = false;
   double step_share_ = 1.0;  // of the kick-drift stable step (Newton-Cotes: half)
   TaskClock tasks_;

@@ -64,6 +64,10 @@ TEST(SpectralBound, FilterScaleKeepsTheMarginOnEitherSign) {
   EXPECT_EQ(filter_stiffening(0.0), kFilterStiffening);
   EXPECT_EQ(filter_stiffening(0.5), kFilterStiffening);
   EXPECT_DOUBLE_EQ(filter_stiffening(2.0), 2.0 * kStiffeningPerGrowth);
+  // With time levels the proven bound grows from the thesis' quarter by the same share of g.
+  EXPECT_EQ(time_level_stiffening(0.0), 1.0);
+  EXPECT_DOUBLE_EQ(kSemiImplicitShare * time_level_stiffening(2.0),
+                   kSemiImplicitShare + 2.0 * kStiffeningPerGrowth);
 }
 
 TEST(SpectralBound, FilterSpectrumFollowsTheGrowthOfAStiffeningLawOnly) {
