@@ -90,8 +90,10 @@ void green_scatter_forces(const LevelModel& m, const int* tets, int count, const
 void green_scatter_packed(const LevelModel& m, PackedTets& packed, const Vec3* u, const Vec3* v,
                           const double* weight, const unsigned char* mask, Vec3* f) {
   const int n = packed.count;
-  if (weight)
+  if (weight && weight != packed.weight_source) {
     for (int k = 0; k < n; ++k) packed.weight[k] = weight[packed.source[k]];
+    packed.weight_source = weight;
+  }
   const GreenKernelData d =
       kernel_data(m.law, packed.tets.data(), packed.grad.data(), packed.volume.data());
   scatter(d, packed.order.data(), n, u, v, weight ? packed.weight.data() : nullptr, mask, f, 0,

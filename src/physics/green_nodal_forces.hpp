@@ -28,7 +28,9 @@ void green_scatter_forces(const LevelModel& m, const int* tets, int count, const
                           Vec3* f, int first = 0, int last = 1 << 30);
 
 /// green_scatter_forces() over the packed tets of `m` (physics/packed_tets.hpp), with the level's
-/// per-tet `weight` (null: 1) gathered into the packed order: the same bits as over their ids.
+/// per-tet `weight` (null: 1) gathered into the packed order at the first pass after pack() or
+/// after PackedTets::weight_source was reset (the weights were edited): the same bits as over
+/// their ids.
 void green_scatter_packed(const LevelModel& m, PackedTets& packed, const Vec3* u, const Vec3* v,
                           const double* weight, const unsigned char* mask, Vec3* f);
 

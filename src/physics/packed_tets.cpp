@@ -12,6 +12,7 @@ void PackedTets::pack(const TetGeometry& geo, const std::vector<int>& ids) {
   volume.resize(count);
   weight.resize(count);
   order.resize(count);
+  weight_source = nullptr;
   for (int k = 0; k < count; ++k) {
     tets[k] = geo.tets[ids[k]];
     grad[k] = geo.grad[ids[k]];
@@ -27,6 +28,7 @@ void PackedTets::clear() {
   grad.clear();
   volume.clear();
   weight.clear();
+  weight_source = nullptr;
   order.clear();
 }
 

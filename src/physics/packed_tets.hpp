@@ -18,7 +18,10 @@ struct PackedTets {
   std::vector<Tet> tets;
   std::vector<TetGradients> grad;
   std::vector<double> volume;
-  std::vector<double> weight;  // per packed tet, filled from the level's weights at each pass
+  // Per packed tet, gathered from the level's weights at the first pass after pack() or after
+  // they were edited (LevelForceField::edit_tet_weights()), never per step.
+  std::vector<double> weight;
+  const double* weight_source = nullptr;  // the weights gathered; nullptr: none yet (stale)
   std::vector<int> order;      // 0 .. count-1: the kernel's tet list
 
   /// Copies the tets `ids` (ascending) of `geo`; `ids` must stay the list passed in later.

@@ -624,7 +624,7 @@ void HierarchicalSimulation::adjust_interface_weights() {
     levels[l].model = models_[l].get();
     levels[l].free_point = &states_[l].free_point;
     levels[l].live_tets = &forces_[l]->tets();
-    if (forces_[l]->weighted()) levels[l].weight = &forces_[l]->tet_weights();
+    if (forces_[l]->weighted()) levels[l].weight = &forces_[l]->edit_tet_weights();
   }
   patch_report_ = patch_->apply(levels);
 }

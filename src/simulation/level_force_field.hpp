@@ -57,7 +57,13 @@ class LevelForceField final : public ForceField {
   /// adjust them before the next evaluation).
   bool weighted() const { return weighted_; }
   const std::vector<int>& tets() const { return tets_; }
-  std::vector<double>& tet_weights() { return share_; }
+  const std::vector<double>& tet_weights() const { return share_; }
+  /// For hierarchy/patch_test_weights.hpp: the weights to adjust, before the next evaluation
+  /// (the packed pass gathers them again then).
+  std::vector<double>& edit_tet_weights() {
+    ws_.packed.weight_source = nullptr;
+    return share_;
+  }
 
  private:
   IndexSet points() const;

@@ -194,5 +194,40 @@ TEST(PackedTets, RecognisesOnlyTheListItPacked) {
   EXPECT_FALSE(packed.packs(IndexSet::of(list)));
 }
 
+// The packed pass gathers the level's weights once, not at every step: again only after pack()
+// or once weight_source is reset (what LevelForceField::edit_tet_weights() does before the patch
+// test adjusts them).
+TEST(PackedTets, GathersTheWeightsAgainOnlyAfterAnEdit) {
+  MaterialLaw law;
+  law.strain = StrainMeasure::GreenLagrange;
+  law.lambda = 5.0e5;
+  law.mu = 3.0e4;
+  const LevelModel m =
+      build_level_model(make_box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), 3, 3, 3), law);
+  std::vector<int> list;
+  for (int t = 0; t < m.num_tets(); t += 2) list.push_back(t);
+  std::vector<Vec3> u(m.num_points()), v(m.num_points(), Vec3::Zero());
+  for (int i = 0; i < m.num_points(); ++i) u[i] = 1e-2 * Vec3(std::sin(i), std::cos(3 * i), 0.5);
+  std::vector<double> weight(m.num_tets(), 0.5);
+  PackedTets packed;
+  packed.pack(m.geo, list);
+  auto pass = [&] {
+    std::vector<Vec3> f(m.num_points(), Vec3::Zero());
+    green_scatter_packed(m, packed, u.data(), v.data(), weight.data(), nullptr, f.data());
+    return f;
+  };
+  const std::vector<Vec3> first = pass();
+  for (double& w : weight) w *= 2;  // edited without saying so: the gathered copy is used
+  EXPECT_EQ(pass(), first);
+  packed.weight_source = nullptr;   // said: gathered again
+  const std::vector<Vec3> doubled = pass();
+  double largest = 0;
+  for (int i = 0; i < m.num_points(); ++i) {
+    EXPECT_EQ(doubled[i], 2.0 * first[i]) << i;  // times two is exact
+    largest = std::max(largest, first[i].norm());
+  }
+  EXPECT_GT(largest, 0.0);
+}
+
 }  // namespace
 }  // namespace mrsim
