@@ -11,11 +11,19 @@ log), for the whole process and for the step loop alone (log.h5 /frames/wall_tim
 excluded).
 
     /usr/bin/python3 bench/adaptive_vs_uniform.py [--binary build/mrsim]
-        [--scenario scenarios/liver_probe.yaml] [--repeats 3] [--json out.json]
+        [--scenario scenarios/liver_probe.yaml] [--repeats 3] [--json out.json] [--callgrind]
+
+--callgrind also runs each kind once under valgrind's callgrind and prints the instructions each
+executes (user space, the whole process) and their ratio: a count that does not move with the
+machine's load, where CPU times on a shared host vary by 40 % between minutes. It is not a
+time (cache misses and stalls are not in it), so it complements the CPU ratio, never replaces
+it. About 60 times slower than a native run (the uniform liver_probe: some 10 minutes).
 """
 import argparse
 import json
 import os
+import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -44,6 +52,24 @@ def timed_run(binary, scenario, out, sets):
     return usage.ru_utime + usage.ru_stime, wall, loop
 
 
+def instructions(binary, scenario, out, sets):
+    """Instructions executed by one run under callgrind (its "Collected" total), or None without
+    valgrind."""
+    if shutil.which("valgrind") is None:
+        return None
+    with tempfile.TemporaryDirectory() as tmp:
+        args = ["valgrind", "--tool=callgrind", "--callgrind-out-file=" + os.path.join(tmp, "cg"),
+                binary, "run", scenario, "-o", out, "-q", "--threads", "1",
+                "--set", "output.vtk=false"]
+        for s in sets:
+            args += ["--set", s]
+        r = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    found = re.search(r"Collected : (\d+)", r.stderr)
+    if r.returncode != 0 or not found:
+        sys.exit("callgrind run failed: " + " ".join(args) + "\n" + r.stderr[-2000:])
+    return int(found.group(1))
+
+
 def counters(out):
     with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
         evaluations = int(h5["/frames/force_evaluations"][-1].sum())
@@ -60,6 +86,8 @@ def main():
     ap.add_argument("--scenario", default=os.path.join(here, "..", "scenarios", "liver_probe.yaml"))
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--json", help="also write the figures to this file")
+    ap.add_argument("--callgrind", action="store_true",
+                    help="also count each kind's instructions under valgrind (slow, steady)")
     a = ap.parse_args()
     with open(a.scenario) as f:
         levels = yaml.safe_load(f)["object"]["levels"]
@@ -75,6 +103,9 @@ def main():
                     uniform.append("time.substeps=%d" % yaml.safe_load(f)["time"]["substeps"])
             runs["uniform"].append(timed_run(a.binary, a.scenario, outs["uniform"], uniform))
         figures = {k: counters(outs[k]) for k in runs}
+        counted = {"adaptive": instructions(a.binary, a.scenario, outs["adaptive"], []),
+                   "uniform": instructions(a.binary, a.scenario, outs["uniform"], uniform)} \
+            if a.callgrind else None
     cpu = {k: statistics.median(c for c, _, _ in v) for k, v in runs.items()}
     # On a shared machine other work only ever adds time: each kind's fastest run is the least
     # disturbed one, a steadier figure than the median when the noise is larger than the effect.
@@ -125,6 +156,16 @@ def main():
           % (result["realtime_loop_adaptive"], result["realtime_loop_uniform"]))
     print("  step loop alone: time ratio %.3f (%.2f x the tet-update ratio)"
           % (result["loop_ratio"], result["loop_ratio"] / result["tet_update_ratio"]))
+    if counted and counted["adaptive"] is None:
+        print("  instructions: skipped (no valgrind on PATH)")
+    elif counted:
+        result["instructions_adaptive"] = counted["adaptive"]
+        result["instructions_uniform"] = counted["uniform"]
+        result["instruction_ratio"] = counted["adaptive"] / counted["uniform"]
+        print("  instructions (callgrind, whole process): adaptive %.3g, uniform %.3g: ratio %.3f"
+              " (%.2f x the tet-update ratio)"
+              % (counted["adaptive"], counted["uniform"], result["instruction_ratio"],
+                 result["instruction_ratio"] / result["tet_update_ratio"]))
     if a.json:
         with open(a.json, "w") as f:
             json.dump(result, f, indent=2)
