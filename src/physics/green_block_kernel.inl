@@ -194,6 +194,9 @@ void all_blocks(const GreenKernelData& m, const int* tets, int count, const doub
   for (; k + kBlock <= count; k += kBlock) block<kBlock, Damped>(m, tets + k, u, v, sink);
   if constexpr (kBlock > 8)
     for (; k + 8 <= count; k += 8) block<8, Damped>(m, tets + k, u, v, sink);
+  // The tail in fours, then singles: each level's live tets end in up to 15 (the single-tet
+  // blocks were 1.7 % of the adaptive liver_probe's instructions).
+  for (; k + 4 <= count; k += 4) block<4, Damped>(m, tets + k, u, v, sink);
   for (; k < count; ++k) block<1, Damped>(m, tets + k, u, v, sink);
 }
 

@@ -107,7 +107,7 @@ std::vector<std::pair<const char*, Scatter>> scatters() {
 // The scattering pass adds each tet's forces to its vertices in list order; over an ascending
 // list that is each point's incidence order, so it must give the gather's sums bit for bit:
 // weighted (some weights zero) and masked, over lists that end in a full block of sixteen, a
-// block of eight and single tets.
+// block of eight, a block of four and a single tet.
 TEST(GreenScatterForces, BitIdenticalToTheGatherOfGreenPiola) {
   TetMesh mesh = make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.06, 0.04), 7, 5, 4);
   std::mt19937 rng(8);
