@@ -36,7 +36,9 @@ void shape_gradients(const GreenKernelData& m, const int* tets, double (&g)[4][3
 // gathered across the tets. Inlined where X is a local array: out of line, GCC could not rule
 // out that G aliases X and compiled it 2.5 times longer.
 template <int B>
-[[gnu::always_inline]] inline void gradient_products(const double (&X)[4][3][B], const double (&g)[4][3][B], double (&G)[9][B]) {
+[[gnu::always_inline]] inline void gradient_products(const double (&X)[4][3][B],
+                                                     const double (&g)[4][3][B],
+                                                     double (&G)[9][B]) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       for (int b = 0; b < B; ++b) {

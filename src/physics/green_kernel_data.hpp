@@ -15,12 +15,15 @@ struct GreenKernelData {
   double two_mu[9], two_psi[9];
 };
 
+/// No upper bound on the points a scattering pass writes (one thread owns them all).
+inline constexpr int kAllPoints = 1 << 30;
+
 /// Where the scattering form of the pass adds its forces (green_scatter_forces()).
 struct GreenScatterTarget {
   const double* weight;        // per tet, or null for 1 (tets of weight zero are skipped)
   const unsigned char* mask;   // per point, or null for every point
   double (*f)[3];              // per point
-  int first = 0, last = 1 << 30;  // only the points [first, last) are written
+  int first = 0, last = kAllPoints;  // only the points [first, last) are written
 };
 
 /// out[tets[k]][a] = -V P ∇N_a for k in [0, count): the baseline build of the kernel.

@@ -97,7 +97,7 @@ void green_scatter_packed(const LevelModel& m, PackedTets& packed, const Vec3* u
   const GreenKernelData d =
       kernel_data(m.law, packed.tets.data(), packed.grad.data(), packed.volume.data());
   scatter(d, packed.order.data(), n, u, v, weight ? packed.weight.data() : nullptr, mask, f, 0,
-          1 << 30);
+          kAllPoints);
 }
 
 void green_scatter_forces_baseline(const GreenKernelData& d, const int* tets, int count,

@@ -25,7 +25,7 @@ void green_nodal_forces(const LevelModel& m, const int* tets, int count, const V
 /// share a call's points out by disjoint ranges give the same bits.
 void green_scatter_forces(const LevelModel& m, const int* tets, int count, const Vec3* u,
                           const Vec3* v, const double* weight, const unsigned char* mask,
-                          Vec3* f, int first = 0, int last = 1 << 30);
+                          Vec3* f, int first = 0, int last = kAllPoints);
 
 /// green_scatter_forces() over the packed tets of `m` (physics/packed_tets.hpp), with the level's
 /// per-tet `weight` (null: 1) gathered into the packed order at the first pass after pack() or

@@ -87,14 +87,16 @@ SpectralScale filter_spectrum_at(const LevelModel& m, double growth) {
 }
 
 PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit, bool time_levels,
-                        const SpectralScale* filter, double growth) {
+                        double growth) {
   if (time_levels) {
     if (semi_implicit) p.stiffness *= time_level_stiffening(growth);
     p.damping *= m.time_level_damping_scale;
     return p;
   }
-  const SpectralScale& f = filter ? *filter : m.filter_spectrum;
-  p.stiffness *= semi_implicit ? f.scale : m.stiffness_spectrum.scale;
+  if (semi_implicit)
+    p.stiffness *= growth == 0 ? m.filter_spectrum.scale : filter_spectrum_at(m, growth).scale;
+  else
+    p.stiffness *= m.stiffness_spectrum.scale;
   p.damping *= m.step_damping_scale;
   return p;
 }

@@ -58,13 +58,12 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law,
 /// is kept and only the damping is scaled to the level's combined limit
 /// (time_level_damping_scale): where damping sets the step, the damping and stiffness modes
 /// apart were 1.6–4.6 times too cautious on the liver.
-/// `filter`: the semi-implicit scale to use instead of the set-up's filter_spectrum
-/// (filter_spectrum_at(), as the strain grows). `growth`: the level's tangent growth g now
-/// (physics/tangent_growth.hpp); semi-implicit with time levels, the proven stiffness bound
-/// grows by time_level_stiffening(g) (0 at rest, what the set-up assumes).
+/// `growth`: the level's tangent growth g now (physics/tangent_growth.hpp; 0, what the set-up
+/// assumes, gives filter_spectrum itself). Semi-implicit, the filtered scale follows it
+/// (filter_spectrum_at()) for one global step, and the proven stiffness bound grows by
+/// time_level_stiffening(g) with time levels.
 PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit = false,
-                        bool time_levels = false, const SpectralScale* filter = nullptr,
-                        double growth = 0.0);
+                        bool time_levels = false, double growth = 0.0);
 
 /// Does the level's tangent stiffness grow with strain (Green–Lagrange)?
 bool stiffens(const LevelModel& m);

@@ -157,8 +157,7 @@ void HierarchicalSimulation::advance_frame(std::vector<TimeLevelChange>* changes
   std::vector<TimeLevelChange>& out = changes ? *changes : changes_scratch_;
   changes_scratch_.clear();
   begin_frame(frame_dt_);
-  // The contact near the tools and Green–Lagrange's growth change stable steps.
-  if (contact_ || tracks_stiffening_) time_levels_->restable();
+  if (steps_follow_frames()) time_levels_->restable();
   run_w_cycle(out);
   ++frames_;
   time_ = static_cast<double>(frames_) * frame_dt_;
@@ -285,7 +284,7 @@ void HierarchicalSimulation::begin_frame(double duration) {
     }
     update_external(time_);
   }
-  if (contact_ || tracks_stiffening_) update_stable_steps();
+  if (steps_follow_frames()) update_stable_steps();
 }
 
 void HierarchicalSimulation::remap_skin() {
@@ -563,10 +562,8 @@ void HierarchicalSimulation::update_stable_steps() {
   const std::vector<double> growth = tangent_growths();
   for (int l = 0; l < L; ++l) {
     const double g = growth.empty() ? 0.0 : growth[l];
-    const SpectralScale filter = filter_spectrum_at(*models_[l], g);
-    const SpectralScale* f = growth.empty() ? nullptr : &filter;
     for (int p : lists_->active(l))
-      loaded_[l][p] = calibrated(inertia_[l][p], *models_[l], semi_implicit_, !global_step_, f, g);
+      loaded_[l][p] = calibrated(inertia_[l][p], *models_[l], semi_implicit_, !global_step_, g);
   }
   if (contact_) {
     near_.clear();

@@ -202,6 +202,9 @@ class HierarchicalSimulation {
   void update_inertia();
   void update_stable_steps();
   std::vector<double> tangent_growths() const;
+  // The stable steps change between topology changes: with the contact near the tools and with
+  // Green–Lagrange's growth, refreshed at each frame start.
+  bool steps_follow_frames() const { return contact_ || tracks_stiffening_; }
   void restart_integrator();
   void rebuild_after_topology(double external_time);
   void run_w_cycle(std::vector<TimeLevelChange>& changes);
