@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "physics/lumped_mass.hpp"
 
@@ -34,7 +35,9 @@ double combined_damping_scale(const LevelModel& m, bool semi, double target,
   if (!std::isfinite(target)) return own;
   auto smallest_step = [&](double damping_scale) {
     double dt = std::numeric_limits<double>::infinity();
-    for (PointInertia p : m.star) {
+    for (int i = 0; i < m.num_points(); ++i) {
+      if (is_held(m, i)) continue;
+      PointInertia p = m.star[i];
       p.stiffness *= stiffness_scale;
       p.damping *= damping_scale;
       dt = std::min(dt, stable_step_of(p, semi));
@@ -51,25 +54,37 @@ double combined_damping_scale(const LevelModel& m, bool semi, double target,
   return hi;
 }
 
-// The level's spectra against its largest point bounds (physics/spectral_bound.hpp).
+// The masses the spectra see: a held point's is infinite, which takes it out of the operator.
+std::vector<double> spectral_masses(const LevelModel& m) {
+  std::vector<double> mass = m.mass;
+  for (int i = 0; i < m.num_points(); ++i)
+    if (is_held(m, i)) mass[i] = std::numeric_limits<double>::infinity();
+  return mass;
+}
+
+// The level's spectra over its free points against their largest point bounds
+// (physics/spectral_bound.hpp).
 void measure_spectrum(LevelModel& m, bool semi_implicit) {
   double k_max = 0, c_max = 0;
-  for (const PointInertia& p : m.star)
-    if (p.mass > 0) {
+  for (int i = 0; i < m.num_points(); ++i) {
+    const PointInertia& p = m.star[i];
+    if (p.mass > 0 && !is_held(m, i)) {
       k_max = std::max(k_max, p.stiffness / p.mass);
       c_max = std::max(c_max, p.damping / p.mass);
     }
-  m.stiffness_spectrum = spectral_scale(largest_mass_scaled_eigenvalue(m.adj, m.K, m.mass), k_max);
-  m.damping_spectrum = spectral_scale(largest_mass_scaled_eigenvalue(m.adj, m.D, m.mass), c_max);
+  }
+  const std::vector<double> mass = spectral_masses(m);
+  m.stiffness_spectrum = spectral_scale(largest_mass_scaled_eigenvalue(m.adj, m.K, mass), k_max);
+  m.damping_spectrum = spectral_scale(largest_mass_scaled_eigenvalue(m.adj, m.D, mass), c_max);
   m.step_damping_scale = m.time_level_damping_scale = m.damping_spectrum.scale;
   if (semi_implicit)
-    m.filter_spectrum = filter_scale(largest_filtered_eigenvalue(m.adj, m.K, m.mass),
+    m.filter_spectrum = filter_scale(largest_filtered_eigenvalue(m.adj, m.K, mass),
                                      m.stiffness_spectrum.eigenvalue, k_max,
                                      stiffens(m) ? kFilterStiffening : 0.0);
   if (m.D.empty() || m.num_points() == 0) return;
   // The level's combined limit (damping and stiffness modes apart) over √kSpectralMargin.
   const SpectralScale& k = semi_implicit ? m.filter_spectrum : m.stiffness_spectrum;
-  const double target = combined_step_limit(m.adj, m.K, m.D, m.mass, semi_implicit, k.eigenvalue,
+  const double target = combined_step_limit(m.adj, m.K, m.D, mass, semi_implicit, k.eigenvalue,
                                             m.damping_spectrum.eigenvalue) /
                         std::sqrt(kSpectralMargin);
   m.step_damping_scale = combined_damping_scale(m, semi_implicit, target, k.scale);
@@ -101,10 +116,14 @@ PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit,
   return p;
 }
 
-LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law, bool semi_implicit) {
+LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law, bool semi_implicit,
+                             const std::vector<std::uint8_t>& held) {
   LevelModel m;
   m.mesh = &mesh;
   m.law = law;
+  if (!held.empty() && held.size() != mesh.points.size())
+    throw std::logic_error("build_level_model: a held mask of another level");
+  if (std::find(held.begin(), held.end(), 1) != held.end()) m.held = held;
   m.geo = build_tet_geometry(mesh);
   m.adj = build_point_adjacency(static_cast<int>(mesh.points.size()), mesh.tets);
   m.mass = lumped_masses(m.geo, m.adj, law.density);

@@ -1,6 +1,7 @@
 #pragma once
 // Everything precomputed for one mesh level (method.md §2): geometry, connectivity, masses,
 // edge matrices, the Laplacian weights of §3.1, and per-point mesh sizes. Immutable during a run.
+#include <cstdint>
 #include <vector>
 
 #include "physics/edge_operators.hpp"
@@ -18,6 +19,9 @@ struct LevelModel {
   TetGeometry geo;
   PointAdjacency adj;
   std::vector<double> mass;           // kg, lumped
+  // 1 for the points the scenario holds (`fixed`), empty when none is: they never move, so
+  // neither the spectra nor the stable step look at them.
+  std::vector<std::uint8_t> held;
   std::vector<double> lumped_volume;  // V*_i = Σ V_t / 4
   std::vector<double> mean_edge;      // h_i, mean rest length of the edges at i
   std::vector<double> min_edge;       // shortest rest edge at i
@@ -43,9 +47,15 @@ struct LevelModel {
   int num_tets() const { return static_cast<int>(geo.tets.size()); }
 };
 
-/// `semi_implicit`: also measure the filtered spectrum (one more Lanczos run).
+/// `semi_implicit`: also measure the filtered spectrum (one more Lanczos run). `held`: the
+/// level's held points (select_fixed_points()), or empty; the spectra are those of the free
+/// points, which the step has to keep stable.
 LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law,
-                             bool semi_implicit = false);
+                             bool semi_implicit = false,
+                             const std::vector<std::uint8_t>& held = {});
+
+/// Is point i of the level held?
+inline bool is_held(const LevelModel& m, int i) { return !m.held.empty() && m.held[i]; }
 
 /// A point bound of level `m` (its star, or what reaches it in the hierarchy, without contact)
 /// scaled by the level's spectrum, for the one global step: the level alone is then estimated

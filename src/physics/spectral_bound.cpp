@@ -97,6 +97,14 @@ double lanczos_top(const PointAdjacency& adj, const std::vector<Term>& terms,
   for (int i = 0; i < n; ++i) s[i] = mass[i] > 0 ? 1 / std::sqrt(mass[i]) : 0;
   Eigen::VectorXd q = start ? *start : start_vector(dofs), q_prev = Eigen::VectorXd::Zero(dofs),
                   w(dofs);
+  // A held point (s = 0) is outside the operator's range: starting there too would add its
+  // zero eigenvalues, which would hide a negative (filtered) top of the free points.
+  if ((s.array() == 0).any()) {
+    for (int i = 0; i < n; ++i)
+      if (s[i] == 0) q.segment<3>(3 * i).setZero();
+    if (q.norm() == 0) return 0;
+    q /= q.norm();
+  }
   std::vector<double> alpha, beta;
   double estimate = 0;
   for (int it = 0; it < std::min(max_iterations, dofs); ++it) {

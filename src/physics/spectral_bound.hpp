@@ -20,8 +20,10 @@ namespace mrsim {
 inline constexpr double kSpectralMargin = 1.5;
 
 /// λ_max of M^-1/2 A M^-1/2, where (A u)_i = Σ_j A_ij (u_j − u_i) over the CSR edge blocks of
-/// `adj` (the sign convention of LevelModel::K and ::D; A positive semi-definite), free
-/// boundary (fixed points only lower it). Lanczos from a fixed start vector (deterministic),
+/// `adj` (the sign convention of LevelModel::K and ::D; A positive semi-definite), over the
+/// points of positive finite mass: give a held point an infinite mass to leave it out (holding
+/// points only lowers λ_max: held at its base, liver_thesis' finest level allows a 1.69× longer
+/// semi-implicit step). Lanczos from a fixed start vector (deterministic),
 /// until the Ritz value's residual bound is below `tolerance` of it or after `max_iterations`;
 /// returns the Ritz value plus that residual bound, so that it errs upwards. 0 for an empty
 /// level or A = 0.

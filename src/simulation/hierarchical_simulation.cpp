@@ -14,6 +14,19 @@
 
 namespace mrsim {
 
+namespace {
+
+const std::vector<std::uint8_t> kNoneHeld;
+
+// Was the model built with these held points (its spectra are over the others)?
+bool holds(const LevelModel& m, const std::vector<std::uint8_t>& held) {
+  for (int i = 0; i < m.num_points(); ++i)
+    if (is_held(m, i) != (!held.empty() && held[i] != 0)) return false;
+  return true;
+}
+
+}  // namespace
+
 HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>& meshes,
                                                const HierarchySetup& setup,
                                                std::vector<LevelModel> models) {
@@ -25,11 +38,14 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   calibration_ = setup.calibration;
   for (int l = 0; l < L; ++l) {
     const MaterialLaw& law = setup.level_laws.empty() ? setup.law : setup.level_laws[l];
-    if (static_cast<int>(models.size()) == L && models[l].mesh == meshes[l])
+    const std::vector<std::uint8_t>& held =
+        l < static_cast<int>(setup.fixed.size()) ? setup.fixed[l] : kNoneHeld;
+    if (static_cast<int>(models.size()) == L && models[l].mesh == meshes[l] &&
+        holds(models[l], held))
       models_.push_back(std::make_unique<LevelModel>(std::move(models[l])));
     else
       models_.push_back(std::make_unique<LevelModel>(
-          build_level_model(*meshes[l], law, is_semi_implicit(setup.integrator))));
+          build_level_model(*meshes[l], law, is_semi_implicit(setup.integrator), held)));
     levels.push_back({meshes[l], &models_[l]->adj});
   }
   // One locator per level, for the level links and the skin binding.

@@ -50,8 +50,9 @@ LevelLaws level_laws(const Scenario& sc, const std::vector<const TetMesh*>& mesh
   LevelLaws out;
   const MaterialLaw law = material_law(sc.material);
   out.laws.assign(meshes.size(), law);
+  out.held = select_fixed_points(meshes, sc.fixed);
   if (!sc.calibrate || meshes.size() < 2) return out;
-  const auto fixed = select_fixed_points(meshes, sc.fixed);
+  const auto& fixed = out.held;
   const std::filesystem::path cache = calibration_cache_dir();
   const std::string key = calibration_key(meshes, law, fixed);
   if (auto cached = read_cached_calibration(cache, key, meshes.size())) {
@@ -95,7 +96,7 @@ HierarchySetup hierarchy_setup(const Scenario& sc, const std::vector<const TetMe
     rules.semi_implicit = is_semi_implicit(sc.time.integrator);
     s.time_levels = rules;
   }
-  s.fixed = select_fixed_points(meshes, sc.fixed);
+  s.fixed = laws->held;
   s.initial_velocity = sc.initial.velocity;
   s.initial_angular_velocity = sc.initial.angular_velocity;
   for (size_t k = 0; k < sc.loads.size(); ++k)

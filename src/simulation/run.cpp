@@ -511,7 +511,7 @@ Scenario check_scenario_inputs(const Scenario& sc) {
   const LevelLaws laws = level_laws(sc, pointers(meshes));
   const std::optional<Skin> skin = run_skin(sc, meshes);
   hierarchy_setup(sc, pointers(meshes), &laws, skin ? &*skin : nullptr);
-  return with_stable_substeps(sc, pointers(meshes), &laws.laws, nullptr, skin ? &*skin : nullptr);
+  return with_stable_substeps(sc, pointers(meshes), &laws, nullptr, skin ? &*skin : nullptr);
 }
 
 namespace {
@@ -524,11 +524,11 @@ RunSummary execute(const Scenario& input, const RunOptions& options, const Check
   const std::vector<TetMesh> meshes = load_meshes(input);
   const LevelLaws laws = level_laws(input, pointers(meshes));
   // Built once: the computed substeps and the simulation read the same models.
-  std::vector<LevelModel> models = level_models(input, pointers(meshes), laws.laws);
+  std::vector<LevelModel> models = level_models(input, pointers(meshes), laws);
   // Built once too: the skin the computed substeps and the tools read.
   const std::optional<Skin> skin = run_skin(input, meshes);
   const Skin* skin_ptr = skin ? &*skin : nullptr;
-  const Scenario sc = with_stable_substeps(input, pointers(meshes), &laws.laws, &models, skin_ptr);
+  const Scenario sc = with_stable_substeps(input, pointers(meshes), &laws, &models, skin_ptr);
   const HierarchySetup setup = hierarchy_setup(sc, pointers(meshes), &laws, skin_ptr);
   HierarchicalSimulation sim(pointers(meshes), setup, std::move(models));
   SpaceAdaptivity adapt(space_settings(sc), sim);

@@ -83,20 +83,20 @@ double shortest_edge(const TetMesh& mesh) {
 }
 
 std::vector<LevelModel> level_models(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
-                                     const std::vector<MaterialLaw>& laws) {
+                                     const LevelLaws& laws) {
   std::vector<LevelModel> models;
   models.reserve(meshes.size());
   for (size_t l = 0; l < meshes.size(); ++l)
-    models.push_back(build_level_model(*meshes[l], laws[l], is_semi_implicit(sc.time.integrator)));
+    models.push_back(build_level_model(*meshes[l], laws.laws[l],
+                                       is_semi_implicit(sc.time.integrator), laws.held[l]));
   return models;
 }
 
 StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
-                       const std::vector<MaterialLaw>* laws,
+                       const LevelLaws* laws,
                        const std::vector<LevelModel>* built, const Skin* skin) {
   const MaterialLaw law = material_law(sc.material);
-  const std::vector<MaterialLaw> computed = laws ? std::vector<MaterialLaw>{}
-                                                 : level_laws(sc, meshes).laws;
+  const LevelLaws computed = laws ? LevelLaws{} : level_laws(sc, meshes);
   if (!laws) laws = &computed;
   const bool semi = is_semi_implicit(sc.time.integrator);
   int last = 0;
@@ -106,7 +106,7 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
   std::vector<LevelModel> own_models;
   if (!built)
     for (int l = 0; l <= last; ++l)
-      own_models.push_back(build_level_model(*meshes[l], (*laws)[l], semi));
+      own_models.push_back(build_level_model(*meshes[l], laws->laws[l], semi, laws->held[l]));
   const std::vector<LevelModel>& models = built ? *built : own_models;
   std::vector<std::vector<PointInertia>> star;
   for (int l = 0; l <= last; ++l) star.push_back(models[l].star);
@@ -122,6 +122,7 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
   StableStep best{std::numeric_limits<double>::infinity(), 0, 0, ""};
   for (int l = 0; l <= last; ++l)
     for (int p = 0; p < static_cast<int>(star[l].size()); ++p) {
+      if (is_held(models[l], p)) continue;  // never moves (the run's step skips it too)
       const double dt = stable_step_of(star[l][p], semi);
       if (dt < best.dt) best = {dt, l, p, ""};
     }
@@ -133,7 +134,7 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
 }
 
 Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
-                              const std::vector<MaterialLaw>* laws,
+                              const LevelLaws* laws,
                               const std::vector<LevelModel>* models, const Skin* skin) {
   const StableStep stable = stable_step(sc, meshes, laws, models, skin);
   const double allowed = sc.time.courant * stable.dt;

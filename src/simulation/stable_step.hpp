@@ -18,6 +18,8 @@
 
 namespace mrsim {
 
+struct LevelLaws;  // simulation/level_setup_from_scenario.hpp
+
 inline constexpr int kMaxSubsteps = 1 << 30;
 
 /// Shortest edge of a mesh (m).
@@ -34,14 +36,14 @@ struct StableStep {
 /// stable step and the simulation are built from (the run builds them once and hands them to
 /// both: the spectra at set-up are half its cost, docs/performance.md).
 std::vector<LevelModel> level_models(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
-                                     const std::vector<MaterialLaw>& laws);
+                                     const LevelLaws& laws);
 
 /// The stable step estimate (before time.courant) of the scenario's levels 0..max_level (0
-/// only when space adaptivity is off). `laws`: each level's material (level_laws(), computed
-/// when not given); `models`: the levels' models (level_models(), built when not given);
+/// only when space adaptivity is off); held points do not count. `laws`: each level's material
+/// and held points (level_laws(), computed when not given); `models`: the levels' models (level_models(), built when not given);
 /// `skin`: the tools' skin (scenario_skin(), built when not given).
 StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
-                       const std::vector<MaterialLaw>* laws = nullptr,
+                       const LevelLaws* laws = nullptr,
                        const std::vector<LevelModel>* models = nullptr,
                        const Skin* skin = nullptr);
 
@@ -50,7 +52,7 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
 /// and the step exceeds C × the estimate, a warning naming the level and the substeps needed.
 /// Throws InputError when the step needed is beyond kMaxSubsteps per frame.
 Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
-                              const std::vector<MaterialLaw>* laws = nullptr,
+                              const LevelLaws* laws = nullptr,
                               const std::vector<LevelModel>* models = nullptr,
                               const Skin* skin = nullptr);
 

@@ -3,7 +3,9 @@
 // eigenvalue of M^-1/2 K M^-1/2 of a whole level (small meshes only).
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <cstdint>
 #include <random>
+#include <vector>
 
 #include "mesh/box_mesh.hpp"
 #include "physics/level_model.hpp"
@@ -48,6 +50,18 @@ inline Eigen::MatrixXd dense_operator(const LevelModel& m, const std::vector<Mat
   for (int i = 0; i < 3 * n; ++i)
     for (int j = 0; j < 3 * n; ++j) A(i, j) /= std::sqrt(m.mass[i / 3] * m.mass[j / 3]);
   return A;
+}
+
+// The rows and columns of the points not held (`held` per point, 1 = held).
+inline Eigen::MatrixXd free_block(const Eigen::MatrixXd& A, const std::vector<std::uint8_t>& held) {
+  std::vector<int> dofs;
+  for (int i = 0; i < static_cast<int>(held.size()); ++i)
+    if (!held[i])
+      for (int d = 0; d < 3; ++d) dofs.push_back(3 * i + d);
+  Eigen::MatrixXd F(dofs.size(), dofs.size());
+  for (size_t a = 0; a < dofs.size(); ++a)
+    for (size_t b = 0; b < dofs.size(); ++b) F(a, b) = A(dofs[a], dofs[b]);
+  return F;
 }
 
 inline double largest_eigenvalue(const Eigen::MatrixXd& A) {

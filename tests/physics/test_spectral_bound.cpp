@@ -4,7 +4,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <limits>
+#include <stdexcept>
+#include <vector>
 
 #include "physics/dense_spectrum.hpp"
 #include "physics/spectral_bound.hpp"
@@ -124,11 +127,14 @@ TEST(SpectralBound, LevelPointBoundsPeakAtTheMarginTimesTheTrueEigenvalue) {
 
 namespace {
 
-// The dense truth of combined_step_limit(): the largest dt with λ_max(M⁻¹(dt²A + 2dt C)) ≤ 4.
-double dense_combined_limit(const LevelModel& m, bool filtered) {
+// The dense truth of combined_step_limit(): the largest dt with λ_max(M⁻¹(dt²A + 2dt C)) ≤ 4,
+// over the points not `held` (all when empty).
+double dense_combined_limit(const LevelModel& m, bool filtered,
+                            const std::vector<std::uint8_t>& held = {}) {
   auto top = [&](double dt) {
-    return largest_eigenvalue(dense_operator(m, m.K, filtered ? 1.0 : -1.0, dt * dt) +
-                              dense_operator(m, m.D, -1.0, 2 * dt));
+    const Eigen::MatrixXd A = dense_operator(m, m.K, filtered ? 1.0 : -1.0, dt * dt) +
+                              dense_operator(m, m.D, -1.0, 2 * dt);
+    return largest_eigenvalue(held.empty() ? A : free_block(A, held));
   };
   double lo = 1e-7, hi = 1.0;
   for (int k = 0; k < 60; ++k) {
@@ -166,4 +172,55 @@ TEST(SpectralBound, CombinedLimitOfDampingAndStiffnessTogether) {
                      std::sqrt(std::pow(m.damping_spectrum.eigenvalue, 2) + 4 * k.eigenvalue)),
                 m.step_damping_scale, m.damping_spectrum.scale);
   }
+}
+
+TEST(SpectralBound, HeldPointsAreLeftOutOfTheLevelsSpectra) {
+  // A level held on a face (scenario `fixed`): its spectra are those of the free points, which
+  // the step has to keep stable, matched from above against the dense operator with the held
+  // rows and columns removed. Holding only lowers them, so the level's combined limit lengthens
+  // (liver_thesis' base held: 1.69× for the semi-implicit finest level), and the calibrated
+  // steps of the free points peak at it over √kSpectralMargin as for a free level.
+  // Cells graded towards the held face (x = 0, the thinnest layer 1/36 of the length): the
+  // level's fastest modes are there, as at liver_thesis' base.
+  TetMesh mesh = make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.04, 0.03), 6, 3, 3);
+  for (Vec3& p : mesh.points) p.x() = 10 * p.x() * p.x();
+  std::vector<std::uint8_t> held(mesh.points.size(), 0);
+  for (size_t i = 0; i < held.size(); ++i) held[i] = mesh.points[i].x() < 1e-9 ? 1 : 0;
+  for (bool semi : {false, true}) {
+    const LevelModel m = build_level_model(mesh, law_with(5e4, 1e4, 0, 20), semi, held);
+    const LevelModel whole = build_level_model(mesh, law_with(5e4, 1e4, 0, 20), semi);
+    ASSERT_EQ(m.held, held);
+    const double k = largest_eigenvalue(free_block(dense_operator(m, m.K), held));
+    EXPECT_GE(m.stiffness_spectrum.eigenvalue, k * (1 - 1e-9));
+    EXPECT_LE(m.stiffness_spectrum.eigenvalue, k * (1 + 2e-3));
+    EXPECT_LT(m.stiffness_spectrum.eigenvalue, whole.stiffness_spectrum.eigenvalue);
+    const double c = largest_eigenvalue(free_block(dense_operator(m, m.D), held));
+    EXPECT_GE(m.damping_spectrum.eigenvalue, c * (1 - 1e-9));
+    EXPECT_LE(m.damping_spectrum.eigenvalue, c * (1 + 2e-3));
+    if (semi) {
+      const double f = largest_eigenvalue(free_block(dense_operator(m, m.K, 1.0), held));
+      EXPECT_GE(m.filter_spectrum.eigenvalue, f - 1e-9 * k);
+      EXPECT_LE(m.filter_spectrum.eigenvalue, f + 2e-3 * k);
+    }
+    // The point bounds compared are the free points' too.
+    double star_max = 0, step = std::numeric_limits<double>::infinity();
+    double whole_step = step;
+    for (int i = 0; i < m.num_points(); ++i) {
+      whole_step = std::min(whole_step, stable_step_of(calibrated(whole.star[i], whole, semi), semi));
+      if (held[i]) continue;
+      star_max = std::max(star_max, m.star[i].stiffness / m.star[i].mass);
+      step = std::min(step, stable_step_of(calibrated(m.star[i], m, semi), semi));
+    }
+    EXPECT_EQ(m.stiffness_spectrum.star_max, star_max);
+    const double truth = dense_combined_limit(m, semi, held);
+    EXPECT_GT(truth, dense_combined_limit(m, semi)) << "semi " << semi;
+    EXPECT_LE(step, truth / std::sqrt(kSpectralMargin) * (1 + 1e-3)) << "semi " << semi;
+    EXPECT_GE(step, truth / std::sqrt(kSpectralMargin) / 1.02) << "semi " << semi;
+    EXPECT_GT(step, whole_step) << "semi " << semi;
+    std::printf("%s: held face, combined limit %.4g s (free level %.4g s), λ_K %.4g (%.4g)\n",
+                semi ? "semi-implicit" : "explicit", truth, dense_combined_limit(whole, semi),
+                m.stiffness_spectrum.eigenvalue, whole.stiffness_spectrum.eigenvalue);
+  }
+  // A mask of another level is a programming error.
+  EXPECT_THROW(build_level_model(mesh, law_with(5e4, 1e4), false, {1, 0}), std::logic_error);
 }

@@ -358,13 +358,19 @@ TEST(HierarchicalSimulation, TakesTheModelsItIsGiven) {
   hs.fixed = mrsim::testing::fixed_where(box.meshes, [](const Vec3& X) { return X.x() < 1e-12; });
   std::vector<LevelModel> built;
   std::vector<const Mat3*> stiffness;
-  for (const TetMesh* mesh : box.ptrs()) {
-    built.push_back(build_level_model(*mesh, hs.law));
+  for (int l = 0; l < 3; ++l) {
+    built.push_back(build_level_model(*box.ptrs()[l], hs.law, false, hs.fixed[l]));
     stiffness.push_back(built.back().K.data());
   }
+  // A model whose spectra were measured with other held points is built again.
+  std::vector<LevelModel> unheld;
+  for (const TetMesh* mesh : box.ptrs()) unheld.push_back(build_level_model(*mesh, hs.law));
+  const Mat3* unheld_stiffness = unheld[0].K.data();
   HierarchicalSimulation given(box.ptrs(), hs, std::move(built));
   HierarchicalSimulation own(box.ptrs(), hs);
   for (int l = 0; l < 3; ++l) EXPECT_EQ(given.model(l).K.data(), stiffness[l]) << l;
+  EXPECT_NE(HierarchicalSimulation(box.ptrs(), hs, std::move(unheld)).model(0).K.data(),
+            unheld_stiffness);
   for (HierarchicalSimulation* sim : {&given, &own}) {
     split_region(*sim, Vec3(0.05, 0.03, 0.02), 0.03);
     sim->advance(100);

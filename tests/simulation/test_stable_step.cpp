@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "physics/level_model.hpp"
 #include "scenario/scenario.hpp"
+#include "simulation/hierarchical_simulation.hpp"
 #include "simulation/level_setup_from_scenario.hpp"
 #include "simulation/stable_step.hpp"
 
@@ -55,7 +56,7 @@ TEST(StableStep, OmittedSubstepsAreThePowerOfTwoThatKeepsTheFinestLevelStable) {
   EXPECT_LT(limit, level_estimate(coarse, sc));
   EXPECT_DOUBLE_EQ(stable_step(sc, {&coarse, &fine}).dt, limit);
   // From the models a run builds once for the step and the simulation: the same estimate.
-  const std::vector<MaterialLaw> laws(2, material_law(sc.material));
+  const LevelLaws laws = level_laws(sc, {&coarse, &fine});
   const std::vector<LevelModel> models = level_models(sc, {&coarse, &fine}, laws);
   EXPECT_EQ(stable_step(sc, {&coarse, &fine}, &laws, &models).dt, limit);
   const double dt = 0.02 / out.time.substeps;
@@ -100,6 +101,42 @@ TEST(StableStep, DampingShortensTheComputedStepAndIsNamedAsTheCause) {
   EXPECT_NE(damped.cause.find("damping"), std::string::npos) << damped.cause;
   EXPECT_GT(with_stable_substeps(sc, {&mesh}).time.substeps,
             with_stable_substeps(beam_scenario(1), {&mesh}).time.substeps);
+}
+
+TEST(StableStep, HeldPointsNeitherSetTheStepNorEnterTheSpectra) {
+  // A clamped, heavily damped beam whose cells thin towards the clamp: the held face never
+  // moves, so the estimate is that of the free points, with the level's spectra over them
+  // (LevelModel::held), and the simulation the run builds from the same scenario holds the same
+  // points and starts from the same estimate.
+  TetMesh mesh = mrsim::testing::beam_mesh(10);
+  for (Vec3& p : mesh.points) p.x() = p.x() * p.x() / mrsim::testing::kBeamL;
+  Scenario sc = beam_scenario(1);
+  sc.material.psi = 200;
+  const StableStep loose = stable_step(sc, {&mesh});
+  FixedRegion clamp;
+  clamp.kind = FixedRegion::Kind::HalfSpace;
+  clamp.normal = Vec3(-1, 0, 0);  // x <= 0
+  sc.fixed.push_back(clamp);
+  const LevelLaws laws = level_laws(sc, {&mesh});
+  const LevelModel m = build_level_model(mesh, laws.laws[0], false, laws.held[0]);
+  double free_min = INFINITY;
+  int held = 0;
+  for (int i = 0; i < m.num_points(); ++i) {
+    if (is_held(m, i)) {
+      ++held;
+      continue;
+    }
+    free_min = std::min(free_min, stable_step_of(calibrated(m.star[i], m), false));
+  }
+  EXPECT_EQ(held, 9);  // the 3 × 3 points of the x = 0 face
+  const StableStep clamped = stable_step(sc, {&mesh});
+  EXPECT_EQ(clamped.dt, free_min);
+  EXPECT_FALSE(is_held(m, clamped.point));
+  EXPECT_GT(clamped.dt, loose.dt);
+  const Scenario run = with_stable_substeps(sc, {&mesh});
+  HierarchicalSimulation sim({&mesh}, hierarchy_setup(run, {&mesh}));
+  EXPECT_EQ(sim.model(0).held, laws.held[0]);
+  EXPECT_DOUBLE_EQ(sim.stable_step_in_force().dt, clamped.dt);
 }
 
 TEST(StableStep, AStiffToolPenaltyShortensTheComputedStepAndIsNamedAsTheCause) {
