@@ -71,9 +71,11 @@ inline bool is_held(const LevelModel& m, int i) { return !m.held.empty() && m.he
 /// `growth`: the level's tangent growth g now (physics/tangent_growth.hpp; 0, what the set-up
 /// assumes, gives filter_spectrum itself). Semi-implicit, the filtered scale follows it
 /// (filter_spectrum_at()) for one global step, and the proven stiffness bound grows by
-/// time_level_stiffening(g) with time levels.
+/// time_level_stiffening(g) with time levels. `damping_growth`: the point's own g_d, the
+/// largest among its tets (tangent_growths_of()); the damping bound grows by 1 + g_d.
 PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit = false,
-                        bool time_levels = false, double growth = 0.0);
+                        bool time_levels = false, double growth = 0.0,
+                        double damping_growth = 0.0);
 
 /// Does the level's tangent stiffness grow with strain (Green–Lagrange)?
 bool stiffens(const LevelModel& m);

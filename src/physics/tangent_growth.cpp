@@ -5,24 +5,56 @@
 
 namespace mrsim {
 
-double tangent_growth(const Mat3& grad_u, const MaterialLaw& law) {
+namespace {
+
+// The largest eigenvalue of E = ½(FᵀF − I) and tr E.
+struct StrainTop {
+  double e_max, trace;
+};
+
+StrainTop strain_top(const Mat3& grad_u) {
   const Mat3 F = Mat3::Identity() + grad_u;
   const Mat3 E = 0.5 * (F.transpose() * F - Mat3::Identity());
   Eigen::SelfAdjointEigenSolver<Mat3> es;
   es.computeDirect(E, Eigen::EigenvaluesOnly);
-  const double e_max = es.eigenvalues()(2);
-  const double lambda = law.bound_lambda(), mu = law.bound_mu();
-  if (!(lambda + 2 * mu > 0)) return std::max(0.0, 2 * e_max);  // no stress: the material part
-  const double stress = lambda * E.trace() + 2 * mu * e_max;
-  const double growth = 2 * e_max + std::max(0.0, stress) / (lambda + 2 * mu);
-  return std::max(0.0, growth);
+  return {es.eigenvalues()(2), E.trace()};
 }
+
+double growth_of(const StrainTop& e, const MaterialLaw& law) {
+  const double lambda = law.bound_lambda(), mu = law.bound_mu();
+  if (!(lambda + 2 * mu > 0)) return std::max(0.0, 2 * e.e_max);  // no stress: the material part
+  const double stress = lambda * e.trace + 2 * mu * e.e_max;
+  return std::max(0.0, 2 * e.e_max + std::max(0.0, stress) / (lambda + 2 * mu));
+}
+
+}  // namespace
+
+double tangent_growth(const Mat3& grad_u, const MaterialLaw& law) {
+  return growth_of(strain_top(grad_u), law);
+}
+
+double damping_growth(const Mat3& grad_u) { return std::max(0.0, 2 * strain_top(grad_u).e_max); }
 
 double largest_tangent_growth(const TetGeometry& geo, std::span<const int> tets,
                               const std::vector<Vec3>& u, const MaterialLaw& law) {
   double top = 0;
   for (const int t : tets)
     top = std::max(top, tangent_growth(tet_gradient(geo.grad[t], geo.tets[t], u.data()), law));
+  return top;
+}
+
+double tangent_growths_of(const TetGeometry& geo, std::span<const int> tets,
+                          const std::vector<Vec3>& u, const MaterialLaw& law,
+                          std::vector<double>& damping) {
+  for (const int t : tets)
+    for (const int a : geo.tets[t]) damping[a] = 0.0;
+  double top = 0;
+  for (const int t : tets) {
+    const StrainTop e = strain_top(tet_gradient(geo.grad[t], geo.tets[t], u.data()));
+    top = std::max(top, growth_of(e, law));
+    const double g_d = std::max(0.0, 2 * e.e_max);
+    for (const int a : geo.tets[t]) damping[a] = std::max(damping[a], g_d);
+  }
   return top;
 }
 

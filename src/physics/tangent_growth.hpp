@@ -10,6 +10,11 @@
 //   g = σ_max(F)² − 1 + max(0, s_max(S)) / (λ + 2μ) = 2 e_max + max(0, λ tr E + 2μ e_max)/(λ+2μ),
 // e_max the largest eigenvalue of E; clamped at 0 (compression softens). A rigid motion has
 // g = 0: rotation alone never shortens a step.
+// The strain-rate damping grows too (method.md §1 and §2.3: eq. 2.22 on Ė = sym(Fᵀ Ḟ)): its stress
+// F (φ tr(Ė) I + 2ψ Ė) changes with the velocity by F 𝒱(sym(Fᵀ δḞ)), whose energy rate is at most
+// σ_max(F)² times the rest damping bound, the material part alone: g_d = σ_max(F)² − 1 = 2 e_max,
+// clamped at 0. (Its change with the position is proportional to the strain rate and is not
+// counted.)
 #include <span>
 #include <vector>
 
@@ -26,5 +31,15 @@ double tangent_growth(const Mat3& grad_u, const MaterialLaw& law);
 /// The largest g over `tets` of a level at displacements `u`; 0 for an empty list.
 double largest_tangent_growth(const TetGeometry& geo, std::span<const int> tets,
                               const std::vector<Vec3>& u, const MaterialLaw& law);
+
+/// g_d of one tet: how far its damping tangent has grown, 2 e_max clamped at 0.
+double damping_growth(const Mat3& grad_u);
+
+/// The largest g over `tets` (largest_tangent_growth()), and per point of those tets the
+/// largest g_d among the listed tets it belongs to, into damping[point] (only those points
+/// are written; one entry per point of the level).
+double tangent_growths_of(const TetGeometry& geo, std::span<const int> tets,
+                          const std::vector<Vec3>& u, const MaterialLaw& law,
+                          std::vector<double>& damping);
 
 }  // namespace mrsim

@@ -579,7 +579,8 @@ void HierarchicalSimulation::update_stable_steps() {
   for (int l = 0; l < L; ++l) {
     const double g = growth.empty() ? 0.0 : growth[l];
     for (int p : lists_->active(l))
-      loaded_[l][p] = calibrated(inertia_[l][p], *models_[l], semi_implicit_, !global_step_, g);
+      loaded_[l][p] = calibrated(inertia_[l][p], *models_[l], semi_implicit_, !global_step_, g,
+                                 growth.empty() ? 0.0 : damping_growth_[l][p]);
   }
   if (contact_) {
     near_.clear();
@@ -613,14 +614,20 @@ void HierarchicalSimulation::update_stable_steps() {
 // (spectral_bound.hpp filter_stiffening(), time_level_stiffening()). Not extrapolated with the
 // velocities: just after a split the woken points' interpolated velocities made g a frame ahead
 // 12.7 on the little man (0.9 now). From the state alone, so a resumed run takes the same
-// steps. Empty when not tracked.
-std::vector<double> HierarchicalSimulation::tangent_growths() const {
+// steps. Empty when not tracked. The damping grows with the strain too, provably by 1 + g_d
+// (tangent_growth.hpp), and where ψ is large it is what the filter leaves explicit: each
+// point's own g_d scales its damping bound (damping_growth_). Without it the 125k-tet liver
+// hierarchy ran 6 % beyond its true limit (docs/stability_matrix.md).
+std::vector<double> HierarchicalSimulation::tangent_growths() {
   if (!tracks_stiffening_) return {};
   std::vector<double> out(num_levels(), 0.0);
+  damping_growth_.resize(num_levels());
   for (int l = 0; l < num_levels(); ++l) {
     const LevelModel& m = *models_[l];
+    damping_growth_[l].resize(m.num_points(), 0.0);
     if (stiffens(m))
-      out[l] = largest_tangent_growth(m.geo, forces_[l]->tets(), states_[l].u, m.law);
+      out[l] = tangent_growths_of(m.geo, forces_[l]->tets(), states_[l].u, m.law,
+                                  damping_growth_[l]);
   }
   return out;
 }

@@ -2,9 +2,12 @@
 // deformed state stays below (1 + g) times the rest energy bound d_t, a rigid motion does not
 // grow it, and the closed form of a uniaxial stretch. The semi-implicit step follows g
 // (physics/spectral_bound.hpp filter_stiffening()), so an optimistic g is an unstable run.
+// The same for the strain-rate damping and its growth g_d, which scales each point's damping
+// bound when semi-implicit.
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -49,6 +52,31 @@ Eigen::Matrix<double, 12, 12> tangent(const TetGradients& g, double volume, cons
   return 0.5 * (K + K.transpose());
 }
 
+// The damping matrix (12×12, symmetrised) of one tet at displacement gradient G: the nodal
+// forces are linear in the velocities, so unit velocities give its columns exactly.
+Eigen::Matrix<double, 12, 12> damping_tangent(const TetGradients& g, double volume, const Mat3& G,
+                                              const MaterialLaw& law) {
+  auto forces = [&](const Mat3& Gdot) {
+    const Mat3 P = green_piola(G, &Gdot, law) - green_piola(G, nullptr, law);
+    Eigen::Matrix<double, 12, 1> f;
+    for (int a = 0; a < 4; ++a) f.segment<3>(3 * a) = volume * P * g[a];
+    return f;
+  };
+  Eigen::Matrix<double, 12, 12> C;
+  for (int b = 0; b < 4; ++b)
+    for (int j = 0; j < 3; ++j) C.col(3 * b + j) = forces(Vec3::Unit(j) * g[b].transpose());
+  return 0.5 * (C + C.transpose());
+}
+
+// A random rotation–stretch–rotation gradient F − I, principal stretches in [0.7, 1.5].
+Mat3 random_gradient(std::mt19937& rng) {
+  std::uniform_real_distribution<double> angle(-3.0, 3.0), stretch(0.7, 1.5);
+  const Vec3 s(stretch(rng), stretch(rng), stretch(rng));
+  const Mat3 F = rotation(angle(rng), angle(rng), angle(rng)) * s.asDiagonal() *
+                 rotation(angle(rng), angle(rng), angle(rng)).transpose();
+  return F - Mat3::Identity();
+}
+
 double top(const Eigen::Matrix<double, 12, 12>& K) {
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>>(K, Eigen::EigenvaluesOnly)
       .eigenvalues()
@@ -81,7 +109,6 @@ TEST(TangentGrowth, DeformedTangentStaysBelowTheGrownRestBound) {
   // mesh, nearly incompressible or not; and the growth is real (the deformed tangent of the
   // largest stretches exceeds the rest one by more than half), so the bound is not vacuous.
   std::mt19937 rng(7);
-  std::uniform_real_distribution<double> angle(-3.0, 3.0), stretch(0.7, 1.5);
   for (double lambda : {0.0, 5e4, 5e5}) {
     const MaterialLaw law = green(lambda, 1e4);
     const LevelModel m = build_level_model(jittered_box(2, 2, 2, 0.3, 3), law);
@@ -90,11 +117,7 @@ TEST(TangentGrowth, DeformedTangentStaysBelowTheGrownRestBound) {
       const TetGradients& g = m.geo.grad[t];
       const double rest = top(tangent(g, m.geo.volume[t], Mat3::Zero(), law));
       for (int trial = 0; trial < 4; ++trial) {
-        const Vec3 s(stretch(rng), stretch(rng), stretch(rng));
-        const Mat3 F =
-            rotation(angle(rng), angle(rng), angle(rng)) * s.asDiagonal() *
-            rotation(angle(rng), angle(rng), angle(rng)).transpose();
-        const Mat3 G = F - Mat3::Identity();
+        const Mat3 G = random_gradient(rng);
         const double growth = tangent_growth(G, law);
         const double deformed = top(tangent(g, m.geo.volume[t], G, law));
         EXPECT_LE(deformed, (1 + growth) * m.bounds.stiffness[t] * (1 + 1e-6))
@@ -125,4 +148,72 @@ TEST(TangentGrowth, LargestOverTetsIsTheMostStretchedTet) {
   EXPECT_GT(top, 1.5 * (1.1 * 1.1 - 1) + 0.01);
   EXPECT_EQ(largest_tangent_growth(m.geo, all, u, law), top);
   EXPECT_EQ(largest_tangent_growth(m.geo, {}, u, law), 0.0);
+}
+
+TEST(TangentGrowth, DeformedDampingStaysBelowTheGrownRestBound) {
+  // λ_max(C(F)) ≤ (1 + g_d) d_t^C with g_d = σ_max(F)² − 1, for random rotations and stretches;
+  // g_d of a rotation is 0 and of a uniaxial stretch s is s² − 1; and the growth is real (the
+  // deformed damping of the largest stretches exceeds the rest one by more than half), so a
+  // damping bound that ignored it would be optimistic.
+  std::mt19937 rng(11);
+  for (double phi : {0.0, 20.0}) {
+    const MaterialLaw law = green(5e4, 1e4);
+    MaterialLaw damped = law_with(5e4, 1e4, phi, 5.0);
+    damped.strain = StrainMeasure::GreenLagrange;
+    const LevelModel m = build_level_model(jittered_box(2, 2, 2, 0.3, 3), damped);
+    double most = 0;
+    for (int t = 0; t < m.num_tets(); ++t) {
+      const TetGradients& g = m.geo.grad[t];
+      const double rest = top(damping_tangent(g, m.geo.volume[t], Mat3::Zero(), damped));
+      for (int trial = 0; trial < 4; ++trial) {
+        const Mat3 G = random_gradient(rng);
+        const double g_d = damping_growth(G);
+        const double deformed = top(damping_tangent(g, m.geo.volume[t], G, damped));
+        EXPECT_LE(deformed, (1 + g_d) * m.bounds.damping[t] * (1 + 1e-9))
+            << "phi " << phi << " tet " << t << " g_d " << g_d;
+        EXPECT_LE(g_d, tangent_growth(G, law) + 1e-12);  // the material part of g
+        most = std::max(most, deformed / rest);
+      }
+    }
+    EXPECT_GT(most, 1.5) << "phi " << phi;
+  }
+  EXPECT_NEAR(damping_growth(rotation(1.1, -0.4, 2.0) - Mat3::Identity()), 0.0, 1e-12);
+  Mat3 G = Mat3::Zero();
+  G(1, 1) = 0.3;
+  EXPECT_NEAR(damping_growth(G), 1.3 * 1.3 - 1, 1e-12);
+}
+
+TEST(TangentGrowth, PointsTakeTheLargestDampingGrowthOfTheirListedTets) {
+  const MaterialLaw law = green(5e4, 1e4);
+  const TetMesh mesh = jittered_box(2, 2, 2, 0.2, 5);
+  const LevelModel m = build_level_model(mesh, law);
+  const int n = m.num_points();
+  std::vector<Vec3> u(n, Vec3::Zero());
+  const int far = 5;
+  u[far] = Vec3(0, 0.004, 0);
+  // Only the tets of `far` and one tet without it are listed.
+  std::vector<int> listed;
+  int other = -1;
+  for (int t = 0; t < m.num_tets(); ++t) {
+    const auto& tet = m.geo.tets[t];
+    if (std::find(tet.begin(), tet.end(), far) != tet.end())
+      listed.push_back(t);
+    else if (other < 0)
+      other = t;
+  }
+  listed.push_back(other);
+  std::sort(listed.begin(), listed.end());
+  std::vector<double> damping(n, -1.0);  // -1: not written
+  const double g = tangent_growths_of(m.geo, listed, u, law, damping);
+  EXPECT_EQ(g, largest_tangent_growth(m.geo, listed, u, law));
+  std::vector<double> expected(n, -1.0);
+  for (int t : listed)
+    for (int a : m.geo.tets[t]) expected[a] = std::max(
+        expected[a] < 0 ? 0.0 : expected[a],
+        damping_growth(tet_gradient(m.geo.grad[t], m.geo.tets[t], u.data())));
+  for (int i = 0; i < n; ++i) EXPECT_EQ(damping[i], expected[i]) << "point " << i;
+  EXPECT_GT(damping[far], 0.01);
+  EXPECT_EQ(std::count(damping.begin(), damping.end(), -1.0),
+            std::count(expected.begin(), expected.end(), -1.0));
+  EXPECT_GT(std::count(damping.begin(), damping.end(), -1.0), 0);  // unlisted points untouched
 }

@@ -350,5 +350,45 @@ TEST(TimeLevels, SemiImplicitStepsFollowGreenLagrangeStiffening) {
   }
 }
 
+// The strain-rate damping grows with the strain too (physics/tangent_growth.hpp): semi-implicit,
+// with one global step or with time levels, each frame start scales every point's damping
+// bound by 1 + g_d of its own most stretched tet. Where ψ is large that is what the filter
+// leaves explicit: without it the 125k-tet liver hierarchy ran 6 % beyond its true limit
+// (docs/stability_matrix.md).
+TEST(TimeLevels, SemiImplicitDampingFollowsTheStrainAtEachPoint) {
+  const TetMesh mesh = graded_beam({{16, 1}});
+  std::vector<int> all(mesh.tets.size());
+  std::iota(all.begin(), all.end(), 0);
+  for (bool levels : {false, true}) {
+    HierarchySetup s = clamped(mesh, Integrator::SemiImplicit);
+    s.law.strain = StrainMeasure::GreenLagrange;
+    s.law.psi = 20;
+    s.gravity *= 200.0;
+    HierarchicalSimulation sim({&mesh}, levels ? time_levels(s, 12) : global_step(s, 256));
+    for (int f = 0; f < 5; ++f) sim.advance_frame();
+    const LevelModel& m = sim.model(0);
+    const std::vector<Vec3> u = sim.state(0).u;
+    const double g = largest_tangent_growth(m.geo, all, u, s.law);
+    std::vector<double> g_d(m.num_points(), 0.0);
+    for (int t : all)
+      for (int a : m.geo.tets[t])
+        g_d[a] = std::max(g_d[a], damping_growth(tet_gradient(m.geo.grad[t], m.geo.tets[t],
+                                                               u.data())));
+    sim.advance_frame();  // its start reads the steps at this state
+    int shorter = 0, checked = 0;
+    for (int p = 0; p < m.num_points(); ++p) {
+      if (!sim.state(0).free_point[p]) continue;
+      const PointInertia& in = sim.inertia(0)[p];
+      const double with = stable_step_of(calibrated(in, m, true, levels, g, g_d[p]), true);
+      const double without = stable_step_of(calibrated(in, m, true, levels, g, 0.0), true);
+      EXPECT_NEAR(sim.stable_steps(0)[p], with, 1e-12 * with) << p;
+      if (with < 0.99 * without) ++shorter;
+      ++checked;
+    }
+    EXPECT_GT(checked, 100);
+    EXPECT_GT(shorter, checked / 4) << "time levels " << levels;
+  }
+}
+
 }  // namespace
 }  // namespace mrsim
