@@ -52,14 +52,13 @@ LevelLaws level_laws(const Scenario& sc, const std::vector<const TetMesh*>& mesh
   out.laws.assign(meshes.size(), law);
   out.held = select_fixed_points(meshes, sc.fixed);
   if (!sc.calibrate || meshes.size() < 2) return out;
-  const auto& fixed = out.held;
   const std::filesystem::path cache = calibration_cache_dir();
-  const std::string key = calibration_key(meshes, law, fixed);
+  const std::string key = calibration_key(meshes, law, out.held);
   if (auto cached = read_cached_calibration(cache, key, meshes.size())) {
     out.calibration = std::move(*cached);
     info("object.calibration: read from the cache " + cache.string() + " (key " + key + ")");
   } else {
-    out.calibration = calibrate_levels(meshes, law, fixed);
+    out.calibration = calibrate_levels(meshes, law, out.held);
     write_cached_calibration(cache, key, out.calibration);
   }
   for (size_t l = 0; l < meshes.size(); ++l) {
