@@ -1,5 +1,7 @@
 #include "time/momentum_restoration.hpp"
 
+#include <Eigen/SVD>
+
 namespace mrsim {
 
 MomentumSums momentum_sums(const std::vector<MomentumBlock>& blocks) {
@@ -15,6 +17,8 @@ MomentumSums momentum_sums(const std::vector<MomentumBlock>& blocks) {
       s.linear += m * b.state->v[i];
       s.angular += m * x.cross(b.state->v[i]);
       s.inertia += m * (x.squaredNorm() * Mat3::Identity() - x * x.transpose());
+      s.rest_moment += m * b.rest[i];
+      s.spread += m * x * b.rest[i].transpose();
     }
   return s;
 }
@@ -54,6 +58,28 @@ MomentumSums lost_since(const MomentumSums& before, const MomentumSums& after) {
 
 RigidField rigid_field(const MomentumSums& sums) {
   return field_of(sums, sums.linear, sums.angular);
+}
+
+Mat3 body_rotation(const MomentumSums& sums) {
+  if (sums.mass <= 0) return Mat3::Identity();
+  const Mat3 a = sums.spread - sums.moment * sums.rest_moment.transpose() / sums.mass;
+  const Eigen::JacobiSVD<Mat3> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  if (!(svd.singularValues()[0] > 0)) return Mat3::Identity();
+  Mat3 u = svd.matrixU();
+  if ((u * svd.matrixV().transpose()).determinant() < 0) u.col(2) *= -1;  // no reflection
+  return u * svd.matrixV().transpose();
+}
+
+void rotate_velocities(const std::vector<MomentumBlock>& blocks, const Mat3& R,
+                       std::vector<PointState*>& states) {
+  for (size_t k = 0; k < blocks.size(); ++k) {
+    const MomentumBlock& b = blocks[k];
+    PointState& s = *states[k];
+    for (int j = 0; j < b.points.count; ++j) {
+      const int i = b.points[j];
+      if (s.free_point[i]) s.v[i] = R * s.v[i];
+    }
+  }
 }
 
 void add_rigid(const std::vector<MomentumBlock>& blocks, const RigidField& field, double sign,

@@ -11,13 +11,16 @@
 
 namespace mrsim {
 
-/// Mass, first moment, linear and angular momentum (about the origin) of the free points.
+/// Mass, first moment, linear and angular momentum (about the origin) of the free points, and
+/// what their rotation from the rest shape is read from.
 struct MomentumSums {
   double mass = 0;
-  Vec3 moment = Vec3::Zero();    // Σ m x
-  Vec3 linear = Vec3::Zero();    // Σ m v
-  Vec3 angular = Vec3::Zero();   // Σ m x × v
-  Mat3 inertia = Mat3::Zero();   // Σ m (|x|² I - x xᵀ), about the origin
+  Vec3 moment = Vec3::Zero();       // Σ m x
+  Vec3 linear = Vec3::Zero();       // Σ m v
+  Vec3 angular = Vec3::Zero();      // Σ m x × v
+  Mat3 inertia = Mat3::Zero();      // Σ m (|x|² I - x xᵀ), about the origin
+  Vec3 rest_moment = Vec3::Zero();  // Σ m X
+  Mat3 spread = Mat3::Zero();       // Σ m x Xᵀ
 };
 
 struct MomentumBlock {
@@ -35,6 +38,15 @@ struct RigidField {
   Vec3 at(const Vec3& x) const { return a + omega.cross(x - c); }
 };
 RigidField rigid_field(const MomentumSums& sums);
+
+/// The body's rotation from its rest shape: the rotation factor of the polar decomposition of
+/// Σ m (x − c)(X − C)ᵀ (c, C the current and rest centres of mass), the best rigid fit of the
+/// rest shape to the current one. The identity for an empty or degenerate body.
+Mat3 body_rotation(const MomentumSums& sums);
+
+/// v ← R v on the free points of `blocks`.
+void rotate_velocities(const std::vector<MomentumBlock>& blocks, const Mat3& R,
+                       std::vector<PointState*>& states);
 
 /// v += sign × field(x) on the free points of `blocks`.
 void add_rigid(const std::vector<MomentumBlock>& blocks, const RigidField& field, double sign,
