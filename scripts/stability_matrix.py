@@ -14,7 +14,13 @@ levels:
    active counts there, so one global step chosen in advance is more cautious. With time levels the largest `time.courant` that still
    runs, the velocity-change rule switched off (it would refine the particles that start to
    blow up): every particle's step is the largest power-of-two division of the frame within
-   courant x its estimate, so that factor is between 1 and 2 times the true ratio: [1.0, 5.0].
+   courant x its estimate, so on one ladder that factor is between 1 and 2 times the true
+   ratio ([1.0, 5.0]). So it is measured on up to --ladder-shifts ladders (frame_dt x
+   2^(j/n), each with its own automatic run, which must finish too) and the smallest is kept,
+   against the band [1.0, 2.5]: every ladder's limit is above the true ratio, so the next
+   ladder is tried only while the smallest so far is above 2.5; after all n it is within
+   2^(1/n) above the true ratio (a row still above 2.5 is then at least 2.5 / 2^(1/n) times
+   cautious).
    The semi-implicit step (eq. 5.1) damps what would grow: its runs are only required never
    to be optimistic (>= 1.0); the measured factor is reported.
 
@@ -43,7 +49,12 @@ import yaml
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 SCENARIOS = ROOT / "scenarios"
 BAND = (1.0, 2.5)       # explicit, one global step: true limit / estimate
-TIME_LEVEL_BAND = (1.0, 5.0)  # time levels: the step is the estimate rounded to a power of two
+# Time levels measured on one ladder: each particle's step is its estimate × courant rounded
+# down to a power-of-two division of the frame, so the largest stable courant is 1 to 2 times
+# the true ratio. With ladder shifts (frame_dt × 2^(j/n), j < n) the smallest of the n limits
+# is within 2^(1/n) above it, and the band is the one-step band itself.
+TIME_LEVEL_BAND = (1.0, 5.0)
+LADDER_SHIFTS = 4
 
 
 SHORT_RUN_SEMI_BAND = (1.0, 4.0)
@@ -58,7 +69,9 @@ def band(row, short_runs=False):
     2.0 over the whole run."""
     if short_runs and row["integrator"].startswith("semi_implicit") and not row["time_levels"]:
         return SHORT_RUN_SEMI_BAND
-    return TIME_LEVEL_BAND if row["time_levels"] else BAND
+    if row["time_levels"] and "shifts" not in row:  # one ladder only (--ladder-shifts 1)
+        return TIME_LEVEL_BAND
+    return BAND
 INTEGRATORS = ["modified_euler", "stoermer_verlet", "semi_implicit"]
 ESTIMATE = re.compile(r"stable step estimate ([0-9.eE+-]+) s")
 COMPUTED = re.compile(r"time\.substeps computed: (\d+)")
@@ -193,6 +206,32 @@ def smallest_stable_substeps(binary, scenario, sets, out, stable, reference):
     return hi
 
 
+# Few substeps per frame are a coarse measure: n stable and n - 1 not puts the limit anywhere in
+# [frame / n, frame / (n - 1)), 33 % wide at n = 4. Below 1 / SUBSTEP_RESOLUTION substeps the
+# step is refined by stretching the frame (largest_stable_step()).
+SUBSTEP_RESOLUTION = 0.05
+
+
+def largest_stable_step(binary, scenario, sets, out, frame_dt, n, reference):
+    """The largest stable step between frame_dt / n (stable) and frame_dt / (n - 1) (not;
+    twice frame_dt for n = 1, doubled while stable), to SUBSTEP_RESOLUTION: n substeps of a
+    frame stretched by s (the adaptivity decides at other times; the step is what counts)."""
+    def stable(scale):
+        return runs(binary, scenario, sets + ["time.substeps=%d" % n,
+                                              "time.frame_dt=%r" % (frame_dt * scale)],
+                    out, reference)
+    lo, hi = 1.0, n / (n - 1) if n > 1 else 2.0
+    while n == 1 and hi < 64 and stable(hi):
+        lo, hi = hi, 2 * hi
+    while hi > lo * (1 + SUBSTEP_RESOLUTION):
+        mid = math.sqrt(lo * hi)
+        if stable(mid):
+            lo = mid
+        else:
+            hi = mid
+    return frame_dt * lo / n
+
+
 def largest_stable_courant(binary, scenario, sets, out, reference, top=8.0):
     """Largest time.courant that still runs (every particle's step scaled), to 5 %."""
     lo, hi = 1.0, 2.0
@@ -209,8 +248,33 @@ def largest_stable_courant(binary, scenario, sets, out, reference, top=8.0):
     return lo
 
 
+def shifted_limits(binary, scenario, sets, out, frame_dt, shifts, first):
+    """Time levels: the largest stable courant on up to `shifts` ladders (frame_dt ×
+    2^(j/shifts)), each against the automatic run of its own ladder, which must finish
+    (`first`: the scenario's own, (exit status, energies)). Each ladder's limit is above the
+    true ratio, so once one is within the band's top the row is known to be within it and the
+    other ladders are not run. Returns [(frame_dt, automatic run's exit status, largest
+    courant)]."""
+    found = []
+    for j in range(shifts):
+        if found and min(c for _, _, c in found) <= BAND[1]:
+            break
+        frame = frame_dt * 2 ** (j / shifts)
+        shifted = sets + (["time.frame_dt=%r" % frame] if j else [])
+        status, reference = first
+        if j:
+            r, _ = mrsim(binary, "run", scenario, shifted, out, keep=True)
+            status, reference = r.returncode, energies(out) if r.returncode == 0 else None
+            shutil.rmtree(out, ignore_errors=True)
+        limit = largest_stable_courant(
+            binary, scenario, shifted + ["adaptivity.time.velocity_change=1.0e+6"], out,
+            reference)
+        found.append((frame, status, limit))
+    return found
+
+
 def measure(binary, work, name, scenario, frame_dt, integrator, psi, time_levels,
-            short_runs=False):
+            short_runs=False, shifts=1):
     sets = settings(integrator, psi, time_levels)
     out = work / "run"
     checked, _ = mrsim(binary, "check", scenario, sets)
@@ -229,7 +293,14 @@ def measure(binary, work, name, scenario, frame_dt, integrator, psi, time_levels
     row = {"case": name, "integrator": integrator, "psi": psi, "time_levels": time_levels,
            "substeps": substeps, "estimate": estimate, "in_force": in_force,
            "auto_exit": r.returncode, "auto_seconds": round(seconds, 1)}
-    if time_levels:
+    if time_levels and shifts > 1:
+        found = shifted_limits(binary, scenario, sets, out, frame_dt, shifts,
+                               (r.returncode, reference))
+        row["shifts"] = [{"frame_dt": f, "auto_exit": e, "limit_factor": c} for f, e, c in found]
+        row["auto_exit"] = max([row["auto_exit"]] + [e for _, e, _ in found], key=abs)
+        row["limit_factor"] = min(c for _, _, c in found)
+        row["ratio"] = row["limit_factor"]
+    elif time_levels:
         fixed = sets + ["adaptivity.time.velocity_change=1.0e+6"]
         row["limit_factor"] = largest_stable_courant(binary, scenario, fixed, out, reference)
         row["ratio"] = row["limit_factor"]
@@ -237,11 +308,15 @@ def measure(binary, work, name, scenario, frame_dt, integrator, psi, time_levels
         fixed = sets + ["time.adapt_substeps=false"]
         n = smallest_stable_substeps(binary, scenario, fixed, out, substeps, reference)
         row["limit_substeps"] = n
+        step = frame_dt / n
+        if n < 1 / SUBSTEP_RESOLUTION and not short_runs:
+            step = largest_stable_step(binary, scenario, fixed, out, frame_dt, n, reference)
+            row["limit_step"] = step
         # Against the smallest estimate in force during the run (the configurations that
         # really occurred); against the set-up estimate (every point that may become active,
         # whole stars) as well: how cautious one global step chosen in advance is.
-        row["ratio"] = frame_dt / n / in_force
-        row["setup_ratio"] = frame_dt / n / estimate
+        row["ratio"] = step / in_force
+        row["setup_ratio"] = step / estimate
     lo, hi = band(row, short_runs)
     row["band"] = [lo, hi if math.isfinite(hi) else None]
     row["ok"] = r.returncode == 0 and lo <= row["ratio"] <= hi
@@ -256,6 +331,11 @@ def table(rows):
     for r in rows:
         limit = ("courant × %.2f" % r["limit_factor"] if r["time_levels"]
                  else "%d substeps" % r["limit_substeps"])
+        if "limit_step" in r:
+            limit += " (step %.3g s)" % r["limit_step"]
+        if len(r.get("shifts", [])) > 1:
+            limit += " (ladders: %s)" % " / ".join("%.2f" % x["limit_factor"]
+                                                   for x in r["shifts"])
         lo, hi = r["band"]
         lines.append("| %s | %s | %s | %s | %d | %.3g | %.3g | %s | %s | %.2f %s | [%g, %s] | %s |" % (
             r["case"], r["integrator"], "as given" if r["psi"] is None else r["psi"],
@@ -277,6 +357,10 @@ def main():
     ap.add_argument("--psi", nargs="*", help="'given' and/or values in Pa.s (default: given 20)")
     ap.add_argument("--time-levels", nargs="*", choices=["off", "on"], help="default: off on")
     ap.add_argument("--table", help="write the markdown table to this file")
+    ap.add_argument("--ladder-shifts", type=int, default=LADDER_SHIFTS,
+                    help="time levels: measure on up to this many ladders frame_dt x 2^(j/n) "
+                         "(the next while the smallest limit is above 2.5) and keep the "
+                         "smallest (default %d; --quick: 1)" % LADDER_SHIFTS)
     args = ap.parse_args()
     binary = pathlib.Path(args.binary).resolve()
     work = pathlib.Path(args.work).resolve()
@@ -286,6 +370,7 @@ def main():
     if args.quick:
         cases = {n: cases[n] for n in ["beam", "beam_adaptive"]}
         integrators, psis, duration = ["modified_euler", "semi_implicit"], [None], 0.1
+        args.ladder_shifts = 1
     if args.integrators:
         integrators = args.integrators
     if args.psi:
@@ -304,7 +389,7 @@ def main():
             for psi in psis:
                 for time_levels in modes:
                     row = measure(binary, work, name, scenario, frame_dt, integrator, psi,
-                                  time_levels, args.quick)
+                                  time_levels, args.quick, max(1, args.ladder_shifts))
                     rows.append(row)
                     print(json.dumps(row), flush=True)
     (work / "stability.json").write_text(json.dumps(rows, indent=1))
