@@ -63,9 +63,8 @@ SHORT_RUN_SEMI_BAND = (1.0, 4.0)
 def band(row, short_runs=False):
     """The same for every integrator: the semi-implicit estimate is the filter's own limit
     (docs/integrators.md), no longer the explicit one doubled. With --quick's short runs the
-    body hardly deforms, so the semi-implicit estimate's Green-Lagrange allowance (0.2 lambda_K
-    on the filtered spectrum, measured on volume_lambda_5e5's indentation) is not used yet
-    there: the adaptive beam's global semi-implicit step is then 4.0 below its limit in 0.1 s,
+    body hardly deforms, so the semi-implicit estimate's Green-Lagrange allowance (at least
+    0.1 lambda_K on the filtered spectrum) is not used yet there: the adaptive beam's global semi-implicit step is then 4.0 below its limit in 0.1 s,
     2.0 over the whole run."""
     if short_runs and row["integrator"].startswith("semi_implicit") and not row["time_levels"]:
         return SHORT_RUN_SEMI_BAND

@@ -65,7 +65,8 @@ TEST(SpectralBound, FilterScaleKeepsTheMarginOnEitherSign) {
                    kSpectralMargin * 3.0 / (kSemiImplicitShare * 8.0));
   // During a run the allowance follows the tangent growth, never below the set-up's.
   EXPECT_EQ(filter_stiffening(0.0), kFilterStiffening);
-  EXPECT_EQ(filter_stiffening(0.5), kFilterStiffening);
+  EXPECT_EQ(filter_stiffening(0.9 * kFilterStiffening / kStiffeningPerGrowth),
+            kFilterStiffening);
   EXPECT_DOUBLE_EQ(filter_stiffening(2.0), 2.0 * kStiffeningPerGrowth);
   // With time levels the proven bound grows from the thesis' quarter by the same share of g.
   EXPECT_EQ(time_level_stiffening(0.0), 1.0);
