@@ -214,14 +214,22 @@ SUBSTEP_RESOLUTION = 0.05
 def largest_stable_step(binary, scenario, sets, out, frame_dt, n, reference):
     """The largest stable step between frame_dt / n (stable) and frame_dt / (n - 1) (not;
     twice frame_dt for n = 1, doubled while stable), to SUBSTEP_RESOLUTION: n substeps of a
-    frame stretched by s (the adaptivity decides at other times; the step is what counts)."""
+    frame stretched by s (the adaptivity decides at other times; the step is what counts). A
+    frame is never stretched beyond the run's duration: a step still stable there is returned
+    as it is (a lower bound)."""
     def stable(scale):
         return runs(binary, scenario, sets + ["time.substeps=%d" % n,
                                               "time.frame_dt=%r" % (frame_dt * scale)],
                     out, reference)
-    lo, hi = 1.0, n / (n - 1) if n > 1 else 2.0
-    while n == 1 and hi < 64 and stable(hi):
-        lo, hi = hi, 2 * hi
+    doc = yaml.safe_load(pathlib.Path(scenario).read_text())
+    top = float(doc["time"].get("duration", frame_dt)) / frame_dt  # largest stretch
+    lo, hi = 1.0, min(n / (n - 1) if n > 1 else 2.0, top)
+    if hi <= lo:
+        return frame_dt / n
+    while n == 1 and hi < min(64, top) and stable(hi):
+        lo, hi = hi, min(2 * hi, top)
+    if hi == top and stable(hi):
+        return frame_dt * hi / n
     while hi > lo * (1 + SUBSTEP_RESOLUTION):
         mid = math.sqrt(lo * hi)
         if stable(mid):

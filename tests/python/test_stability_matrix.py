@@ -130,6 +130,18 @@ def check_refined_step(script, binary):
     check(step is not None and abs(row["ratio"] - step / row["in_force"]) < 1e-12
           and row["auto_exit"] == 0 and row["ratio"] >= 1.0,
           "the refined step over the estimate in force, not optimistic: %s" % row.get("ratio"))
+    # Cut at 0.1 s, a frame is never stretched beyond the run (an input error before).
+    with tempfile.TemporaryDirectory() as work:
+        r = subprocess.run(["/usr/bin/python3", script, "--binary", binary, "--work", work,
+                            "--cases", "liver_thesis", "--integrators", "semi_implicit",
+                            "--psi", "given", "--time-levels", "off", "--duration", "0.1"],
+                           capture_output=True, text=True, timeout=900)
+        path = os.path.join(work, "stability.json")
+        rows = json.load(open(path)) if os.path.exists(path) else []
+    step = rows[0].get("limit_step", 0.02 / rows[0]["limit_substeps"]) if len(rows) == 1 else 0
+    check(0.02 / max(rows[0]["limit_substeps"], 1) <= step <= 0.1 + 1e-12 if rows else False,
+          "a short run's refined step stays within its duration: %s (%s)"
+          % (step, (r.stdout + r.stderr).strip()[-300:] if not rows else "ok"))
 
 
 if __name__ == "__main__":
