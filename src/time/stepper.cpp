@@ -58,7 +58,7 @@ void Stepper::kick_step(double dt) {
   // The filter sees only the velocity relative to the body's rigid motion, in the body's
   // frame. Filtered whole, a rigid motion would be braked most where K_ii dt²/m is largest, and
   // the lag turned into strain: on a free beam with a slab of cells 8 times thinner, energy
-  // grew 2.6- to 40-fold in 0.5 s at 0.12–0.5 of the stable step. And the filter's blocks K_ii
+  // grew 2.6- to 40-fold in 0.5 s at 0.12–0.94 of the stable step. And the filter's blocks K_ii
   // are the rest shape's: once the body has turned, R K_ii Rᵀ is its stiffness, so the filter
   // works in the rest frame, (I + dt²K_ii/m)⁻¹ applied to Rᵀ v (the same beam spinning at
   // 2 rad/s diverged at 0.69 of the stable step without it). Time levels: it cannot drag the
