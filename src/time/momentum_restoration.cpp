@@ -25,6 +25,20 @@ MomentumSums momentum_sums(const std::vector<MomentumBlock>& blocks) {
 
 namespace {
 
+// visit(rest, state, i) for every free point i of `blocks` (states[k] is block k's state).
+template <class Visit>
+void for_each_free_point(const std::vector<MomentumBlock>& blocks,
+                         std::vector<PointState*>& states, Visit&& visit) {
+  for (size_t k = 0; k < blocks.size(); ++k) {
+    const MomentumBlock& b = blocks[k];
+    PointState& s = *states[k];
+    for (int j = 0; j < b.points.count; ++j) {
+      const int i = b.points[j];
+      if (s.free_point[i]) visit(b.rest, s, i);
+    }
+  }
+}
+
 // The rigid field a + ω × (x - c) over a body of the given mass, moment and inertia (about the
 // origin) whose linear momentum is `linear` and angular momentum about the origin `angular`.
 RigidField field_of(const MomentumSums& body, const Vec3& linear, const Vec3& angular) {
@@ -72,26 +86,16 @@ Mat3 body_rotation(const MomentumSums& sums) {
 
 void rotate_velocities(const std::vector<MomentumBlock>& blocks, const Mat3& R,
                        std::vector<PointState*>& states) {
-  for (size_t k = 0; k < blocks.size(); ++k) {
-    const MomentumBlock& b = blocks[k];
-    PointState& s = *states[k];
-    for (int j = 0; j < b.points.count; ++j) {
-      const int i = b.points[j];
-      if (s.free_point[i]) s.v[i] = R * s.v[i];
-    }
-  }
+  for_each_free_point(blocks, states, [&](const Vec3*, PointState& s, int i) {
+    s.v[i] = R * s.v[i];
+  });
 }
 
 void add_rigid(const std::vector<MomentumBlock>& blocks, const RigidField& field, double sign,
                std::vector<PointState*>& states) {
-  for (size_t k = 0; k < blocks.size(); ++k) {
-    const MomentumBlock& b = blocks[k];
-    PointState& s = *states[k];
-    for (int j = 0; j < b.points.count; ++j) {
-      const int i = b.points[j];
-      if (s.free_point[i]) s.v[i] += sign * field.at(b.rest[i] + s.u[i]);
-    }
-  }
+  for_each_free_point(blocks, states, [&](const Vec3* rest, PointState& s, int i) {
+    s.v[i] += sign * field.at(rest[i] + s.u[i]);
+  });
 }
 
 void restore_momentum(const std::vector<MomentumBlock>& blocks, const MomentumSums& before,
