@@ -3,6 +3,7 @@
 //   A_ij = Σ_t V_t ∇N_i ∇N_jᵀ,   B_ij = Σ_t V_t (∇N_j ∇N_iᵀ + (∇N_i·∇N_j) I),
 // so that K_ij = λA_ij + μB_ij (stiffness) and D_ij = φA_ij + ψB_ij (damping), and the linear
 // force is f_i = -Σ_j K_ij (u_j - u_i) - Σ_j D_ij (v_j - v_i).
+#include <array>
 #include <vector>
 
 #include "physics/material_law.hpp"
@@ -20,6 +21,18 @@ EdgeOperators build_edge_operators(const TetGeometry& geo, const PointAdjacency&
 /// K_ij (or D_ij) for every CSR entry: coefficient_a * A + coefficient_b * B.
 std::vector<Mat3> combine_edge_operators(const EdgeOperators& ops, double coefficient_a,
                                          double coefficient_b);
+
+struct CombinedEdges {
+  std::vector<std::vector<Mat3>> matrices;  // one per coefficient pair, indexed like nbr
+  std::vector<double> laplacian_w;          // -tr(B_ij) / 4 = -Σ_t V_t ∇N_i·∇N_j (§3.1)
+};
+
+/// a·A + b·B for each pair (a, b) of `coefficients` (stiffness λ, μ; damping φ, ψ) and the
+/// Laplacian weights, the same values as combine_edge_operators(build_edge_operators(...)),
+/// summed one point's row at a time: A and B are never held whole (at set-up they were two
+/// more arrays the size of K, written and read once).
+CombinedEdges combined_edge_operators(const TetGeometry& geo, const PointAdjacency& adj,
+                                      const std::vector<std::array<double, 2>>& coefficients);
 
 /// Block (a, b) of V Bᵀ C B for the tensor S_pq = λ tr(ε) δ_pq + 2 μ_pq ε_pq:
 ///   [p][r] = V (λ g_ap g_br + δ_pr Σ_q μ_pq g_aq g_bq + μ_pr g_bp g_ar),

@@ -129,17 +129,20 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law, bool s
   m.adj = build_point_adjacency(static_cast<int>(mesh.points.size()), mesh.tets);
   m.mass = lumped_masses(m.geo, m.adj, law.density);
   m.lumped_volume = lumped_masses(m.geo, m.adj, 1.0);
-  const EdgeOperators ops = build_edge_operators(m.geo, m.adj);
+  std::vector<std::array<double, 2>> coefficients;  // λA + μB, φA + ψB of the isotropic law
   if (law.scales.isotropic()) {
-    m.K = combine_edge_operators(ops, law.lambda, law.mu);
-    if (law.damped()) m.D = combine_edge_operators(ops, law.phi, law.psi);
+    coefficients.push_back({law.lambda, law.mu});
+    if (law.damped()) coefficients.push_back({law.phi, law.psi});
+  }
+  CombinedEdges edges = combined_edge_operators(m.geo, m.adj, coefficients);
+  m.laplacian_w = std::move(edges.laplacian_w);
+  if (law.scales.isotropic()) {
+    m.K = std::move(edges.matrices[0]);
+    if (law.damped()) m.D = std::move(edges.matrices[1]);
   } else {  // a calibrated level (hierarchy/level_calibration.hpp)
     m.K = orthotropic_edge_matrices(m.geo, m.adj, law.lambda, law.mu, law.scales);
     if (law.damped()) m.D = orthotropic_edge_matrices(m.geo, m.adj, law.phi, law.psi, law.scales);
   }
-  // B_ij = (∇N_j∇N_iᵀ + (∇N_i·∇N_j) I) V summed, so trace(B_ij) = 4 Σ V ∇N_i·∇N_j.
-  m.laplacian_w.resize(ops.B.size());
-  for (size_t e = 0; e < ops.B.size(); ++e) m.laplacian_w[e] = -ops.B[e].trace() / 4.0;
   edge_lengths(m);
   m.bounds = tet_energy_bounds(m.geo, law);
   m.star = star_inertia(m.adj, m.bounds, m.mass);

@@ -22,12 +22,14 @@ struct Term {
 
 // y = M^-1/2 (Σ terms) M^-1/2 x, one gather per point (s = 1/√m, 0 where a point has no mass).
 // The terms (at most two: stiffness and damping) share one pass over each point's neighbours,
-// each with its own sum: the same operations in the same order as one pass per term.
+// each with its own sum: the same operations in the same order as one pass per term. sx: room
+// for s x, formed once per product rather than once per neighbour visit (the same products).
 constexpr std::size_t kMaxTerms = 2;
 
 template <std::size_t N>
 void apply_terms(const PointAdjacency& adj, const std::vector<Term>& terms,
-                 const Eigen::VectorXd& s, const Eigen::VectorXd& x, Eigen::VectorXd& y) {
+                 const Eigen::VectorXd& s, const Eigen::VectorXd& x, Eigen::VectorXd& sx,
+                 Eigen::VectorXd& y) {
   const int n = adj.num_points();
   std::array<const Mat3*, N> edge;
   std::array<double, N> own, coefficient;
@@ -36,12 +38,13 @@ void apply_terms(const PointAdjacency& adj, const std::vector<Term>& terms,
     own[k] = terms[k].own;
     coefficient[k] = terms[k].coefficient;
   }
+  for (int i = 0; i < n; ++i) sx.segment<3>(3 * i) = s[i] * x.segment<3>(3 * i);
   for (int i = 0; i < n; ++i) {
-    const Vec3 xi = s[i] * x.segment<3>(3 * i);
+    const Vec3 xi = sx.segment<3>(3 * i);
     std::array<Vec3, N> sum;
     for (std::size_t k = 0; k < N; ++k) sum[k].setZero();
     for (int e = adj.nbr_start[i]; e < adj.nbr_start[i + 1]; ++e) {
-      const Vec3 xj = s[adj.nbr[e]] * x.segment<3>(3 * adj.nbr[e]);
+      const Vec3 xj = sx.segment<3>(3 * adj.nbr[e]);
       for (std::size_t k = 0; k < N; ++k) sum[k].noalias() += edge[k][e] * (xj + own[k] * xi);
     }
     Vec3 yi = Vec3::Zero();
@@ -51,11 +54,11 @@ void apply_terms(const PointAdjacency& adj, const std::vector<Term>& terms,
 }
 
 void apply(const PointAdjacency& adj, const std::vector<Term>& terms, const Eigen::VectorXd& s,
-           const Eigen::VectorXd& x, Eigen::VectorXd& y) {
+           const Eigen::VectorXd& x, Eigen::VectorXd& sx, Eigen::VectorXd& y) {
   if (terms.size() == 1)
-    apply_terms<1>(adj, terms, s, x, y);
+    apply_terms<1>(adj, terms, s, x, sx, y);
   else
-    apply_terms<2>(adj, terms, s, x, y);
+    apply_terms<2>(adj, terms, s, x, sx, y);
 }
 
 // Largest Ritz value of the tridiagonal (alpha, beta) and its residual bound |β_k s_k|.
@@ -96,7 +99,7 @@ double lanczos_top(const PointAdjacency& adj, const std::vector<Term>& terms,
   Eigen::VectorXd s(n);
   for (int i = 0; i < n; ++i) s[i] = mass[i] > 0 ? 1 / std::sqrt(mass[i]) : 0;
   Eigen::VectorXd q = start ? *start : start_vector(dofs), q_prev = Eigen::VectorXd::Zero(dofs),
-                  w(dofs);
+                  w(dofs), sx(dofs);
   // A held point (s = 0) is outside the operator's range: starting there too would add its
   // zero eigenvalues, which would hide a negative (filtered) top of the free points.
   if ((s.array() == 0).any()) {
@@ -108,7 +111,7 @@ double lanczos_top(const PointAdjacency& adj, const std::vector<Term>& terms,
   std::vector<double> alpha, beta;
   double estimate = 0;
   for (int it = 0; it < std::min(max_iterations, dofs); ++it) {
-    apply(adj, terms, s, q, w);
+    apply(adj, terms, s, q, sx, w);
     if (it > 0) w -= beta.back() * q_prev;
     alpha.push_back(q.dot(w));
     w -= alpha.back() * q;
