@@ -60,6 +60,7 @@ ExtendibleDataset::ExtendibleDataset(hid_t parent, const std::string& parent_pat
   dataset_ = checked(H5Dcreate2(parent, spec.name.c_str(), spec.file_type, space.get(),
                                 H5P_DEFAULT, properties.get(), H5P_DEFAULT),
                      H5Dclose, where(), "create dataset");
+  file_type_ = checked(H5Dget_type(dataset_.get()), H5Tclose, where(), "get datatype");
   if (!spec.units.empty()) set_string_attribute(dataset_.get(), "units", spec.units, where());
   if (!spec.description.empty()) {
     set_string_attribute(dataset_.get(), "description", spec.description, where());
@@ -69,6 +70,7 @@ ExtendibleDataset::ExtendibleDataset(hid_t parent, const std::string& parent_pat
 void ExtendibleDataset::open_existing(hid_t parent, const ExtendibleSpec& spec) {
   dataset_ = checked(H5Dopen2(parent, spec.name.c_str(), H5P_DEFAULT), H5Dclose, where(),
                      "open dataset");
+  file_type_ = checked(H5Dget_type(dataset_.get()), H5Tclose, where(), "get datatype");
   Handle space = checked(H5Dget_space(dataset_.get()), H5Sclose, where(), "get dataspace");
   std::vector<hsize_t> dims(spec.row_shape.size() + 1);
   const int rank = H5Sget_simple_extent_ndims(space.get());
@@ -117,9 +119,28 @@ void ExtendibleDataset::append(const void* data, hid_t memory_type, hsize_t rows
   Handle memory_space = checked(H5Screate_simple(static_cast<int>(count.size()), count.data(),
                                                  nullptr),
                                 H5Sclose, where(), "create memory dataspace");
-  check(H5Dwrite(dataset_.get(), memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT,
-                 data),
+  check(H5Dwrite(dataset_.get(), memory_type, memory_space.get(), file_space.get(),
+                 transfer_properties(memory_type, rows), data),
         where(), "write rows");
+}
+
+// A write that converts (the events' kinds: char* in memory, variable-length strings in the
+// file; H5Tequal() cannot tell, since variable-length data always converts) goes through HDF5's
+// type-conversion and background buffers, 1 MiB each by default and allocated zeroed at every
+// write: most of log.h5's cost per frame on liver_probe. They are sized to the rows written
+// instead (HDF5 converts in pieces of the buffer's size, so any size of one element or more
+// writes the same values). A write that does not convert allocates no buffer either way.
+hid_t ExtendibleDataset::transfer_properties(hid_t memory_type, hsize_t rows) {
+  constexpr hsize_t kLeast = 1024, kMost = hsize_t{1} << 20;  // bytes; HDF5's default is kMost
+  const hsize_t element = std::max(H5Tget_size(memory_type), H5Tget_size(file_type_.get()));
+  const hsize_t bytes = std::clamp<hsize_t>(rows * std::max<hsize_t>(row_size(), 1) * element,
+                                            std::max(kLeast, element), kMost);
+  if (!transfer_.valid())
+    transfer_ = checked(H5Pcreate(H5P_DATASET_XFER), H5Pclose, where(),
+                        "create transfer properties");
+  check(H5Pset_buffer(transfer_.get(), bytes, nullptr, nullptr), where(),
+        "set conversion buffer size");
+  return transfer_.get();
 }
 
 void ExtendibleDataset::close() { check(dataset_.close(), where(), "close dataset"); }

@@ -61,7 +61,10 @@ class ExtendibleDataset {
  private:
   Where where() const { return {file_, path_}; }
   void open_existing(hid_t parent, const ExtendibleSpec& spec);
+  hid_t transfer_properties(hid_t memory_type, hsize_t rows);
   Handle dataset_;
+  Handle file_type_;  // the dataset's element type in the file
+  Handle transfer_;   // transfer properties: the conversion buffer sized to each write
   std::vector<hsize_t> row_shape_;
   hsize_t rows_ = 0;
   std::string path_;  // full path in the file, for messages

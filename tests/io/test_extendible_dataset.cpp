@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include "h5_reader.hpp"
 #include "io/extendible_dataset.hpp"
 #include "io/hdf5_error.hpp"
+#include "io/hdf5_types.hpp"
 #include "temp_dir.hpp"
 
 namespace mrsim {
@@ -89,6 +91,47 @@ TEST(ExtendibleDataset, DuplicateNameThrowsRunErrorNamingFileAndDataset) {
     EXPECT_NE(message.find("t.h5:/position: cannot create dataset"), std::string::npos)
         << message;
   }
+}
+
+// Writes that convert (variable-length strings from char*, doubles stored as floats) go through
+// a conversion buffer sized to the rows written: one row, a few, and more than its 1 MiB cap
+// (converted in pieces) must all store what was given.
+TEST(ExtendibleDataset, ConvertingWritesOfAnySizeStoreTheirValues) {
+  test::TempDir dir;
+  const auto path = dir.path() / "t.h5";
+  const std::vector<std::size_t> batches = {1, 3, 200'000};  // the last: 1.6 MB of char*
+  std::vector<std::string> words;
+  std::vector<double> numbers;
+  {
+    H5Id file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+    const h5::Handle text = h5::utf8_string_type({path.string(), "/kind"});
+    ExtendibleSpec kind;
+    kind.name = "kind";
+    kind.file_type = text.get();
+    ExtendibleSpec value;
+    value.name = "value";
+    value.file_type = H5T_IEEE_F32LE;
+    ExtendibleDataset kinds(file, "/", kind, path.string()), values(file, "/", value, path.string());
+    for (const std::size_t n : batches) {
+      std::vector<const char*> pointers;
+      const std::size_t first = words.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        words.push_back(i % 2 ? "split" : "time_coarsen");
+        numbers.push_back(0.25 * static_cast<double>(first + i));
+      }
+      for (std::size_t i = first; i < words.size(); ++i) pointers.push_back(words[i].c_str());
+      kinds.append(pointers.data(), text.get(), n);
+      values.append(std::span<const double>(numbers).subspan(first));
+    }
+    kinds.close();
+    values.close();
+  }
+  H5Id file(test::open_read_only(path), H5Fclose);
+  EXPECT_EQ(test::read_strings(file, "/kind"), words);
+  const auto back = test::read_array<double>(file, "/value");
+  ASSERT_EQ(back.values.size(), numbers.size());
+  for (std::size_t i = 0; i < numbers.size(); i += 997) EXPECT_EQ(back.values[i], numbers[i]);
+  EXPECT_EQ(back.values.back(), numbers.back());
 }
 
 TEST(ExtendibleDataset, ChunkRowsAimAtAboutSixtyFourKibibytes) {
