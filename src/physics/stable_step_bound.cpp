@@ -8,13 +8,22 @@ namespace mrsim {
 
 namespace {
 
-// V (p |G|_F² + 2 q σ_max(G)²): (p, q) = (λ, μ), or (φ, ψ) for damping.
-double energy_bound(const TetGradients& g, double V, double p, double q) {
+// |G|_F² and σ_max(G)² of a tet's shape-gradient matrix: what both of its bounds need.
+struct GradientNorms {
+  double frobenius2, largest2;
+};
+
+GradientNorms gradient_norms(const TetGradients& g) {
   Mat3 GGt = Mat3::Zero();
   for (const Vec3& ga : g) GGt.noalias() += ga * ga.transpose();
   Eigen::SelfAdjointEigenSolver<Mat3> es;
   es.computeDirect(GGt, Eigen::EigenvaluesOnly);
-  return V * (p * GGt.trace() + 2 * q * es.eigenvalues().maxCoeff());
+  return {GGt.trace(), es.eigenvalues().maxCoeff()};
+}
+
+// V (p |G|_F² + 2 q σ_max(G)²): (p, q) = (λ, μ), or (φ, ψ) for damping.
+double energy_bound(const GradientNorms& n, double V, double p, double q) {
+  return V * (p * n.frobenius2 + 2 * q * n.largest2);
 }
 
 }  // namespace
@@ -25,10 +34,12 @@ TetEnergyBounds tet_energy_bounds(const TetGeometry& geo, const MaterialLaw& law
   out.stiffness.resize(n);
   out.damping.assign(n, 0.0);
   for (std::size_t t = 0; t < n; ++t) {
+    // One eigenvalue solve serves both bounds of the tet.
+    const GradientNorms norms = gradient_norms(geo.grad[t]);
     // A calibrated level's tensor is bounded by its largest scales (MaterialLaw::bound_*).
-    out.stiffness[t] = energy_bound(geo.grad[t], geo.volume[t], law.bound_lambda(), law.bound_mu());
+    out.stiffness[t] = energy_bound(norms, geo.volume[t], law.bound_lambda(), law.bound_mu());
     if (law.damped())
-      out.damping[t] = energy_bound(geo.grad[t], geo.volume[t], law.bound_phi(), law.bound_psi());
+      out.damping[t] = energy_bound(norms, geo.volume[t], law.bound_phi(), law.bound_psi());
   }
   return out;
 }
