@@ -23,15 +23,17 @@ class NeighbourSlots {
   std::vector<int> slot_;
 };
 
-// Sums A and B of one point's row at a time (into row_a, row_b, indexed from the row's first CSR
-// entry) and hands each finished row to row(i, first, row_a, row_b): what build_edge_operators()
-// and combined_edge_operators() share, the same sums in the same order for both.
-template <class Row>
-void sum_rows(const TetGeometry& geo, const PointAdjacency& adj, Row&& row) {
+}  // namespace
+
+CombinedEdges combined_edge_operators(const TetGeometry& geo, const PointAdjacency& adj,
+                                      const std::vector<std::array<double, 2>>& coefficients) {
+  CombinedEdges out;
+  out.matrices.assign(coefficients.size(), std::vector<Mat3>(adj.nbr.size()));
+  out.laplacian_w.resize(adj.nbr.size());
   const int n = adj.num_points();
   int widest = 0;
   for (int i = 0; i < n; ++i) widest = std::max(widest, adj.nbr_start[i + 1] - adj.nbr_start[i]);
-  std::vector<Mat3> row_a(widest), row_b(widest);
+  std::vector<Mat3> row_a(widest), row_b(widest);  // A and B of one point's row
   NeighbourSlots slot(n);
   // Per point i, gather from its incident tets: entry (i, j) for every other vertex j.
   for (int i = 0; i < n; ++i) {
@@ -53,45 +55,13 @@ void sum_rows(const TetGeometry& geo, const PointAdjacency& adj, Row&& row) {
       }
     }
     slot.reset(adj, i);
-    row(i, first, row_a.data(), row_b.data());
-  }
-}
-
-}  // namespace
-
-EdgeOperators build_edge_operators(const TetGeometry& geo, const PointAdjacency& adj) {
-  EdgeOperators ops;
-  ops.A.resize(adj.nbr.size());
-  ops.B.resize(adj.nbr.size());
-  sum_rows(geo, adj, [&](int i, int first, const Mat3* a, const Mat3* b) {
-    const int degree = adj.nbr_start[i + 1] - first;
-    std::copy_n(a, degree, ops.A.begin() + first);
-    std::copy_n(b, degree, ops.B.begin() + first);
-  });
-  return ops;
-}
-
-std::vector<Mat3> combine_edge_operators(const EdgeOperators& ops, double coefficient_a,
-                                         double coefficient_b) {
-  std::vector<Mat3> k(ops.A.size());
-  for (size_t e = 0; e < k.size(); ++e) k[e] = coefficient_a * ops.A[e] + coefficient_b * ops.B[e];
-  return k;
-}
-
-CombinedEdges combined_edge_operators(const TetGeometry& geo, const PointAdjacency& adj,
-                                      const std::vector<std::array<double, 2>>& coefficients) {
-  CombinedEdges out;
-  out.matrices.assign(coefficients.size(), std::vector<Mat3>(adj.nbr.size()));
-  out.laplacian_w.resize(adj.nbr.size());
-  sum_rows(geo, adj, [&](int i, int first, const Mat3* a, const Mat3* b) {
-    for (int k = 0; k < adj.nbr_start[i + 1] - first; ++k) {
-      const int e = first + k;
+    for (int k = 0; k < degree; ++k) {
       for (size_t c = 0; c < coefficients.size(); ++c)
-        out.matrices[c][e] = coefficients[c][0] * a[k] + coefficients[c][1] * b[k];
+        out.matrices[c][first + k] = coefficients[c][0] * row_a[k] + coefficients[c][1] * row_b[k];
       // B_ij = (∇N_j∇N_iᵀ + (∇N_i·∇N_j) I) V summed, so trace(B_ij) = 4 Σ V ∇N_i·∇N_j.
-      out.laplacian_w[e] = -b[k].trace() / 4.0;
+      out.laplacian_w[first + k] = -row_b[k].trace() / 4.0;
     }
-  });
+  }
   return out;
 }
 

@@ -12,25 +12,14 @@
 
 namespace mrsim {
 
-struct EdgeOperators {
-  std::vector<Mat3> A, B;  // indexed like PointAdjacency::nbr
-};
-
-EdgeOperators build_edge_operators(const TetGeometry& geo, const PointAdjacency& adj);
-
-/// K_ij (or D_ij) for every CSR entry: coefficient_a * A + coefficient_b * B.
-std::vector<Mat3> combine_edge_operators(const EdgeOperators& ops, double coefficient_a,
-                                         double coefficient_b);
-
 struct CombinedEdges {
   std::vector<std::vector<Mat3>> matrices;  // one per coefficient pair, indexed like nbr
   std::vector<double> laplacian_w;          // -tr(B_ij) / 4 = -Σ_t V_t ∇N_i·∇N_j (§3.1)
 };
 
 /// a·A + b·B for each pair (a, b) of `coefficients` (stiffness λ, μ; damping φ, ψ) and the
-/// Laplacian weights, the same values as combine_edge_operators(build_edge_operators(...)),
-/// summed one point's row at a time: A and B are never held whole (at set-up they were two
-/// more arrays the size of K, written and read once).
+/// Laplacian weights of every CSR entry, A and B summed one point's row at a time: they are
+/// never held whole (two more arrays the size of K, written and read once).
 CombinedEdges combined_edge_operators(const TetGeometry& geo, const PointAdjacency& adj,
                                       const std::vector<std::array<double, 2>>& coefficients);
 
@@ -41,8 +30,8 @@ Mat3 orthotropic_block(const Vec3& ga, const Vec3& gb, double volume, double lam
                        const double (&mu)[3][3]);
 
 /// K_ij (or D_ij) of a calibrated level's orthotropic tensor (MaterialLaw::scales): λ and μ
-/// scaled as hooke() does. Equal to combine_edge_operators(ops, λ, μ) to rounding when the
-/// scales are all one (the isotropic law keeps that path).
+/// scaled as hooke() does. Equal to combined_edge_operators() with (λ, μ) to rounding when the
+/// scales are all one (the isotropic law keeps combined_edge_operators()).
 std::vector<Mat3> orthotropic_edge_matrices(const TetGeometry& geo, const PointAdjacency& adj,
                                             double lambda, double mu,
                                             const StiffnessScales& scales);

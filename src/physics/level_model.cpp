@@ -129,17 +129,18 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law, bool s
   m.adj = build_point_adjacency(static_cast<int>(mesh.points.size()), mesh.tets);
   m.mass = lumped_masses(m.geo, m.adj, law.density);
   m.lumped_volume = lumped_masses(m.geo, m.adj, 1.0);
-  std::vector<std::array<double, 2>> coefficients;  // λA + μB, φA + ψB of the isotropic law
-  if (law.scales.isotropic()) {
-    coefficients.push_back({law.lambda, law.mu});
-    if (law.damped()) coefficients.push_back({law.phi, law.psi});
-  }
+  // K = λA + μB and D = φA + ψB of the isotropic law come with the Laplacian weights; a
+  // calibrated level (hierarchy/level_calibration.hpp) takes only the weights from there.
+  const bool isotropic = law.scales.isotropic();
+  std::vector<std::array<double, 2>> coefficients;
+  if (isotropic) coefficients.push_back({law.lambda, law.mu});
+  if (isotropic && law.damped()) coefficients.push_back({law.phi, law.psi});
   CombinedEdges edges = combined_edge_operators(m.geo, m.adj, coefficients);
   m.laplacian_w = std::move(edges.laplacian_w);
-  if (law.scales.isotropic()) {
+  if (isotropic) {
     m.K = std::move(edges.matrices[0]);
     if (law.damped()) m.D = std::move(edges.matrices[1]);
-  } else {  // a calibrated level (hierarchy/level_calibration.hpp)
+  } else {
     m.K = orthotropic_edge_matrices(m.geo, m.adj, law.lambda, law.mu, law.scales);
     if (law.damped()) m.D = orthotropic_edge_matrices(m.geo, m.adj, law.phi, law.psi, law.scales);
   }

@@ -109,8 +109,8 @@ TEST(CalibratedLaw, CauchyEdgeMatricesAreTheTensorsForce) {
   }
   EXPECT_LT(err, 1e-12 * scale);
   // With unit scales the orthotropic matrices are the isotropic λA + μB.
-  const EdgeOperators ops = build_edge_operators(m.geo, m.adj);
-  const std::vector<Mat3> iso = combine_edge_operators(ops, law.lambda, law.mu);
+  const std::vector<Mat3> iso =
+      combined_edge_operators(m.geo, m.adj, {{law.lambda, law.mu}}).matrices[0];
   const std::vector<Mat3> ortho =
       orthotropic_edge_matrices(m.geo, m.adj, law.lambda, law.mu, StiffnessScales{});
   for (size_t e = 0; e < iso.size(); ++e)
