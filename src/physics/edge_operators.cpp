@@ -28,7 +28,10 @@ class NeighbourSlots {
 CombinedEdges combined_edge_operators(const TetGeometry& geo, const PointAdjacency& adj,
                                       const std::vector<std::array<double, 2>>& coefficients) {
   CombinedEdges out;
-  out.matrices.assign(coefficients.size(), std::vector<Mat3>(adj.nbr.size()));
+  // Each sized on its own: every entry is written below, and one sized vector copied into the
+  // others would fault in and copy megabytes of uninitialised memory first.
+  out.matrices.resize(coefficients.size());
+  for (auto& m : out.matrices) m.resize(adj.nbr.size());
   out.laplacian_w.resize(adj.nbr.size());
   const int n = adj.num_points();
   int widest = 0;
