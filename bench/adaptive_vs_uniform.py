@@ -10,8 +10,14 @@ of each run (simulated seconds per wall second, VTK output off: the simulation, 
 log), for the whole process and for the step loop alone (log.h5 /frames/wall_time, the set-up
 excluded).
 
+The runs keep the levels' spectra in a cache of their own (MRSIM_CACHE_DIR in the bench's
+temporary folder, simulation/spectrum_cache.hpp). --cache warm (the default) fills it with one
+untimed run of each kind first, as every run of a sweep after its first finds it; --cache cold
+empties it before each run, as a hierarchy's very first run.
+
     /usr/bin/python3 bench/adaptive_vs_uniform.py [--binary build/mrsim]
         [--scenario scenarios/liver_probe.yaml] [--repeats 3] [--json out.json] [--callgrind]
+        [--cache warm|cold]
 
 --callgrind also runs each kind once under valgrind's callgrind and prints the instructions each
 executes (user space, the whole process) and their ratio: a count that does not move with the
@@ -35,14 +41,24 @@ import numpy as np
 import yaml
 
 
+CACHE = {"dir": None, "cold": False}  # the runs' MRSIM_CACHE_DIR, and whether to empty it
+
+
+def run_env():
+    if CACHE["cold"]:
+        shutil.rmtree(CACHE["dir"], ignore_errors=True)
+    return dict(os.environ, MRSIM_CACHE_DIR=CACHE["dir"])
+
+
 def timed_run(binary, scenario, out, sets):
     """Runs mrsim once; returns (CPU s of the process, wall s, wall s of the step loop)."""
     args = [binary, "run", scenario, "-o", out, "-q", "--threads", "1",
             "--set", "output.vtk=false"]
     for s in sets:
         args += ["--set", s]
+    env = run_env()
     start = time.monotonic()
-    p = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    p = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env)
     _, status, usage = os.wait4(p.pid, 0)
     wall = time.monotonic() - start
     if os.waitstatus_to_exitcode(status) != 0:
@@ -63,7 +79,8 @@ def instructions(binary, scenario, out, sets):
                 "--set", "output.vtk=false"]
         for s in sets:
             args += ["--set", s]
-        r = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        r = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                           env=run_env())
     found = re.search(r"Collected : (\d+)", r.stderr)
     if r.returncode != 0 or not found:
         sys.exit("callgrind run failed: " + " ".join(args) + "\n" + r.stderr[-2000:])
@@ -88,6 +105,8 @@ def main():
     ap.add_argument("--json", help="also write the figures to this file")
     ap.add_argument("--callgrind", action="store_true",
                     help="also count each kind's instructions under valgrind (slow, steady)")
+    ap.add_argument("--cache", choices=("warm", "cold"), default="warm",
+                    help="the levels' spectra cached by an earlier run (warm) or measured (cold)")
     a = ap.parse_args()
     with open(a.scenario) as f:
         levels = yaml.safe_load(f)["object"]["levels"]
@@ -95,7 +114,12 @@ def main():
     runs = {"adaptive": [], "uniform": []}
     with tempfile.TemporaryDirectory() as tmp:
         outs = {k: os.path.join(tmp, k) for k in runs}
+        CACHE["dir"], CACHE["cold"] = os.path.join(tmp, "cache"), a.cache == "cold"
         uniform = ["object.levels=" + finest]
+        if not CACHE["cold"]:  # one short untimed run of each kind fills the cache
+            short = ["time.duration=%s" % 0.02]
+            timed_run(a.binary, a.scenario, outs["adaptive"], short)
+            timed_run(a.binary, a.scenario, outs["uniform"], uniform + short)
         for _ in range(a.repeats):
             runs["adaptive"].append(timed_run(a.binary, a.scenario, outs["adaptive"], []))
             if len(uniform) == 1:  # the same steps: the adaptive run's, computed or given
@@ -135,8 +159,9 @@ def main():
         result["tool_force_peak_difference"] = float(abs(na.max() - nu.max()) / nu.max())
         result["tool_force_max_difference"] = float(np.abs(na - nu).max() / nu.max())
         result["tool_samples"] = int(len(fa))
-    print("%s, one thread, median of %d paired runs (CPU = user + sys of the process)"
-          % (result["scenario"], a.repeats))
+    result["cache"] = a.cache
+    print("%s, one thread, median of %d paired runs (CPU = user + sys of the process), %s cache"
+          % (result["scenario"], a.repeats, a.cache))
     print("  CPU adaptive %.2f s, uniform finest %.2f s: ratio %.3f"
           % (cpu["adaptive"], cpu["uniform"], result["cpu_ratio"]))
     print("  point-force evaluations ratio %.3f, tet updates ratio %.3f (CPU / tet ratio %.2f)"

@@ -38,6 +38,8 @@ CombinedEdges combined_edge_operators(const TetGeometry& geo, const PointAdjacen
   for (int i = 0; i < n; ++i) widest = std::max(widest, adj.nbr_start[i + 1] - adj.nbr_start[i]);
   std::vector<Mat3> row_a(widest), row_b(widest);  // A and B of one point's row
   NeighbourSlots slot(n);
+  // Without coefficients only the weights are wanted: tr(B_ij) needs B's diagonal, not A.
+  const bool weights_only = coefficients.empty();
   // Per point i, gather from its incident tets: entry (i, j) for every other vertex j.
   for (int i = 0; i < n; ++i) {
     const int first = adj.nbr_start[i], degree = adj.nbr_start[i + 1] - first;
@@ -53,6 +55,12 @@ CombinedEdges combined_edge_operators(const TetGeometry& geo, const PointAdjacen
         if (b == a) continue;
         const int e = slot[geo.tets[t][b]] - first;
         const Vec3& gb = geo.grad[t][b];
+        if (weights_only) {
+          // B's diagonal alone, each entry by the same operations as the whole block's.
+          const double d = ga.dot(gb);
+          for (int c = 0; c < 3; ++c) row_b[e](c, c) += V * (gb[c] * ga[c] + d);
+          continue;
+        }
         row_a[e].noalias() += V * ga * gb.transpose();
         row_b[e].noalias() += V * (gb * ga.transpose() + ga.dot(gb) * Mat3::Identity());
       }

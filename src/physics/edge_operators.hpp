@@ -19,7 +19,8 @@ struct CombinedEdges {
 
 /// a·A + b·B for each pair (a, b) of `coefficients` (stiffness λ, μ; damping φ, ψ) and the
 /// Laplacian weights of every CSR entry, A and B summed one point's row at a time: they are
-/// never held whole (two more arrays the size of K, written and read once).
+/// never held whole (two more arrays the size of K, written and read once). No coefficients:
+/// the Laplacian weights alone, the same bits, at a fraction of the cost.
 CombinedEdges combined_edge_operators(const TetGeometry& geo, const PointAdjacency& adj,
                                       const std::vector<std::array<double, 2>>& coefficients);
 

@@ -62,9 +62,21 @@ std::vector<double> spectral_masses(const LevelModel& m) {
   return mass;
 }
 
-// The level's spectra over its free points against their largest point bounds
-// (physics/spectral_bound.hpp).
-void measure_spectrum(LevelModel& m, bool semi_implicit) {
+// The level's Lanczos runs (physics/spectral_bound.hpp) over its free points.
+LevelSpectra measured_spectra(const LevelModel& m, bool semi_implicit) {
+  const std::vector<double> mass = spectral_masses(m);
+  LevelSpectra s;
+  s.stiffness = largest_mass_scaled_eigenvalue(m.adj, m.K, mass);
+  s.damping = largest_mass_scaled_eigenvalue(m.adj, m.D, mass);
+  if (semi_implicit) s.filtered = largest_filtered_eigenvalue(m.adj, m.K, mass);
+  if (m.D.empty() || m.num_points() == 0) return s;
+  s.combined = combined_step_limit(m.adj, m.K, m.D, mass, semi_implicit,
+                                   semi_implicit ? s.filtered : s.stiffness, s.damping);
+  return s;
+}
+
+// The level's spectra against their largest point bounds (physics/spectral_bound.hpp).
+void apply_spectra(LevelModel& m, bool semi_implicit, const LevelSpectra& s) {
   double k_max = 0, c_max = 0;
   for (int i = 0; i < m.num_points(); ++i) {
     const PointInertia& p = m.star[i];
@@ -73,20 +85,17 @@ void measure_spectrum(LevelModel& m, bool semi_implicit) {
       c_max = std::max(c_max, p.damping / p.mass);
     }
   }
-  const std::vector<double> mass = spectral_masses(m);
-  m.stiffness_spectrum = spectral_scale(largest_mass_scaled_eigenvalue(m.adj, m.K, mass), k_max);
-  m.damping_spectrum = spectral_scale(largest_mass_scaled_eigenvalue(m.adj, m.D, mass), c_max);
+  m.spectra = s;
+  m.stiffness_spectrum = spectral_scale(s.stiffness, k_max);
+  m.damping_spectrum = spectral_scale(s.damping, c_max);
   m.step_damping_scale = m.time_level_damping_scale = m.damping_spectrum.scale;
   if (semi_implicit)
-    m.filter_spectrum = filter_scale(largest_filtered_eigenvalue(m.adj, m.K, mass),
-                                     m.stiffness_spectrum.eigenvalue, k_max,
+    m.filter_spectrum = filter_scale(s.filtered, m.stiffness_spectrum.eigenvalue, k_max,
                                      stiffens(m) ? kFilterStiffening : 0.0);
-  if (m.D.empty() || m.num_points() == 0) return;
+  if (!m.law.damped() || m.num_points() == 0) return;
   // The level's combined limit (damping and stiffness modes apart) over √kSpectralMargin.
   const SpectralScale& k = semi_implicit ? m.filter_spectrum : m.stiffness_spectrum;
-  const double target = combined_step_limit(m.adj, m.K, m.D, mass, semi_implicit, k.eigenvalue,
-                                            m.damping_spectrum.eigenvalue) /
-                        std::sqrt(kSpectralMargin);
+  const double target = s.combined / std::sqrt(kSpectralMargin);
   m.step_damping_scale = combined_damping_scale(m, semi_implicit, target, k.scale);
   m.time_level_damping_scale = combined_damping_scale(m, semi_implicit, target, 1.0);
 }
@@ -117,8 +126,12 @@ PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit,
   return p;
 }
 
+bool edge_matrices_needed(const MaterialLaw& law, bool semi_implicit) {
+  return law.strain == StrainMeasure::Cauchy || semi_implicit;
+}
+
 LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law, bool semi_implicit,
-                             const std::vector<std::uint8_t>& held) {
+                             const std::vector<std::uint8_t>& held, const LevelSpectra* known) {
   LevelModel m;
   m.mesh = &mesh;
   m.law = law;
@@ -131,13 +144,16 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law, bool s
   m.lumped_volume = lumped_masses(m.geo, m.adj, 1.0);
   // K = λA + μB and D = φA + ψB of the isotropic law come with the Laplacian weights; a
   // calibrated level (hierarchy/level_calibration.hpp) takes only the weights from there.
+  const bool matrices = !known || edge_matrices_needed(law, semi_implicit);
   const bool isotropic = law.scales.isotropic();
   std::vector<std::array<double, 2>> coefficients;
-  if (isotropic) coefficients.push_back({law.lambda, law.mu});
-  if (isotropic && law.damped()) coefficients.push_back({law.phi, law.psi});
+  if (matrices && isotropic) coefficients.push_back({law.lambda, law.mu});
+  if (matrices && isotropic && law.damped()) coefficients.push_back({law.phi, law.psi});
   CombinedEdges edges = combined_edge_operators(m.geo, m.adj, coefficients);
   m.laplacian_w = std::move(edges.laplacian_w);
-  if (isotropic) {
+  if (!matrices) {
+    // K and D would only feed the spectra, which are known.
+  } else if (isotropic) {
     m.K = std::move(edges.matrices[0]);
     if (law.damped()) m.D = std::move(edges.matrices[1]);
   } else {
@@ -147,7 +163,7 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law, bool s
   edge_lengths(m);
   m.bounds = tet_energy_bounds(m.geo, law);
   m.star = star_inertia(m.adj, m.bounds, m.mass);
-  measure_spectrum(m, semi_implicit);
+  apply_spectra(m, semi_implicit, known ? *known : measured_spectra(m, semi_implicit));
   return m;
 }
 

@@ -2,6 +2,7 @@
 // Everything precomputed for one mesh level (method.md §2): geometry, connectivity, masses,
 // edge matrices, the Laplacian weights of §3.1, and per-point mesh sizes. Immutable during a run.
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "physics/edge_operators.hpp"
@@ -12,6 +13,15 @@
 #include "physics/tet_geometry.hpp"
 
 namespace mrsim {
+
+/// What the level's Lanczos runs measure at set-up (measured_spectra() in level_model.cpp), the
+/// inputs of its spectral scales: λ_max(M⁻¹K), λ_max(M⁻¹D), the filtered λ_max (semi-implicit
+/// only, else 0) and combined_step_limit() (infinite when undamped). A run that knows them
+/// (simulation/spectrum_cache.hpp) skips the runs and gets the same model, bit for bit.
+struct LevelSpectra {
+  double stiffness = 0, damping = 0, filtered = 0;
+  double combined = std::numeric_limits<double>::infinity();
+};
 
 struct LevelModel {
   const TetMesh* mesh = nullptr;
@@ -25,8 +35,11 @@ struct LevelModel {
   std::vector<double> lumped_volume;  // V*_i = Σ V_t / 4
   std::vector<double> mean_edge;      // h_i, mean rest length of the edges at i
   std::vector<double> min_edge;       // shortest rest edge at i
-  std::vector<Mat3> K;                // λA + μB per CSR entry (used by the Cauchy force)
-  std::vector<Mat3> D;                // φA + ψB per CSR entry (Cauchy damping); empty if undamped
+  // λA + μB and φA + ψB per CSR entry (D empty if undamped): the Cauchy force, the
+  // semi-implicit filter and the spectra use them. Both empty when none of those needs them
+  // (Green–Lagrange, explicit, spectra given: edge_matrices_needed()).
+  std::vector<Mat3> K;
+  std::vector<Mat3> D;
   std::vector<double> laplacian_w;    // w_ij = -Σ_t V_t ∇N_i·∇N_j per CSR entry (§3.1)
   TetEnergyBounds bounds;             // energy bounds of each tet (stable step)
   // λ_max(M⁻¹K), λ_max(M⁻¹D) of the level alone and the scales they give its point bounds for
@@ -42,6 +55,7 @@ struct LevelModel {
   // The same for time levels, whose stiffness bounds stay the proven ones (damping_calibrated()).
   double time_level_damping_scale = 1;
   std::vector<PointInertia> star;  // mass and bounds of each point's whole star
+  LevelSpectra spectra;            // measured or given (build_level_model())
 
   int num_points() const { return adj.num_points(); }
   int num_tets() const { return static_cast<int>(geo.tets.size()); }
@@ -49,10 +63,17 @@ struct LevelModel {
 
 /// `semi_implicit`: also measure the filtered spectrum (one more Lanczos run). `held`: the
 /// level's held points (select_fixed_points()), or empty; the spectra are those of the free
-/// points, which the step has to keep stable.
+/// points, which the step has to keep stable. `known`: the spectra of this mesh, law, held mask
+/// and integrator family measured before (LevelModel::spectra of an earlier build): no Lanczos
+/// run, and no edge matrices where nothing else needs them.
 LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law,
                              bool semi_implicit = false,
-                             const std::vector<std::uint8_t>& held = {});
+                             const std::vector<std::uint8_t>& held = {},
+                             const LevelSpectra* known = nullptr);
+
+/// Does a level of this law need K and D beyond its spectra? The Cauchy force gathers them and
+/// the semi-implicit filter takes K's diagonal blocks; the Green–Lagrange force does not.
+bool edge_matrices_needed(const MaterialLaw& law, bool semi_implicit);
 
 /// Is point i of the level held?
 inline bool is_held(const LevelModel& m, int i) { return !m.held.empty() && m.held[i]; }

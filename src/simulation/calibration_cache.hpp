@@ -2,7 +2,7 @@
 // The calibration of a hierarchy's coarse levels (hierarchy/level_calibration.hpp) costs up to
 // a few seconds at set-up (one factorisation of the finest level, one per fit iteration of each
 // coarser level); sweeps and repeated runs of one hierarchy pay it once. The result is kept in
-// $MRSIM_CACHE_DIR (default $XDG_CACHE_HOME/mrsim, else ~/.cache/mrsim) under calibration/,
+// the result cache (simulation/result_cache.hpp) under calibration/,
 // one JSON file per key: a hash of everything the fit reads (each level's points, tets and
 // fixed flags, λ, μ, density, the fit's version). The numbers round-trip exactly, so a run
 // that reads the cache is the run that computed it, bit for bit.

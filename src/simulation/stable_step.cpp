@@ -13,6 +13,8 @@
 #include "physics/level_model.hpp"
 #include "simulation/contact_setup.hpp"
 #include "simulation/level_setup_from_scenario.hpp"
+#include "simulation/result_cache.hpp"
+#include "simulation/spectrum_cache.hpp"
 
 namespace mrsim {
 
@@ -86,9 +88,16 @@ std::vector<LevelModel> level_models(const Scenario& sc, const std::vector<const
                                      const LevelLaws& laws) {
   std::vector<LevelModel> models;
   models.reserve(meshes.size());
-  for (size_t l = 0; l < meshes.size(); ++l)
-    models.push_back(build_level_model(*meshes[l], laws.laws[l],
-                                       is_semi_implicit(sc.time.integrator), laws.held[l]));
+  int reused = 0;
+  for (size_t l = 0; l < meshes.size(); ++l) {
+    bool hit = false;
+    models.push_back(cached_level_model(*meshes[l], laws.laws[l],
+                                        is_semi_implicit(sc.time.integrator), laws.held[l], &hit));
+    reused += hit;
+  }
+  if (reused > 0)
+    info("the spectra of " + std::to_string(reused) + " of " + std::to_string(meshes.size()) +
+         " levels: reused from " + result_cache_dir("spectra").string());
   return models;
 }
 
@@ -106,7 +115,7 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
   std::vector<LevelModel> own_models;
   if (!built)
     for (int l = 0; l <= last; ++l)
-      own_models.push_back(build_level_model(*meshes[l], laws->laws[l], semi, laws->held[l]));
+      own_models.push_back(cached_level_model(*meshes[l], laws->laws[l], semi, laws->held[l]));
   const std::vector<LevelModel>& models = built ? *built : own_models;
   std::vector<std::vector<PointInertia>> star;
   for (int l = 0; l <= last; ++l) star.push_back(models[l].star);

@@ -3,7 +3,9 @@
 the same outputs bit for bit when run twice and when run with 1 or 2 threads (the threaded
 loops forced on whatever their size). Checked with `mrsim compare` at zero tolerance (every
 log.h5 dataset and attribute but wall times, every VTU array, the resolved scenarios, the
-summary) and byte for byte on the VTU pieces; a scenario with a tool covers the contact path."""
+summary) and byte for byte on the VTU pieces; a scenario with a tool covers the contact path.
+The first run measures the levels' spectra into a fresh cache (MRSIM_CACHE_DIR) and the others
+read them there (simulation/spectrum_cache.hpp): the cache changes no bit."""
 import filecmp
 import json
 import os
@@ -48,13 +50,17 @@ def adaptivity_happened(folder):
 
 
 def runs_agree(binary, scenario, tmp, name, sets):
-    env = dict(os.environ, MRSIM_PARALLEL_THRESHOLD="1")
+    cache = os.path.join(tmp, name + "_cache")
+    env = dict(os.environ, MRSIM_PARALLEL_THRESHOLD="1", MRSIM_CACHE_DIR=cache)
     extra = [a for s in sets for a in ("--set", s)]
     outs = {}
     for tag, threads in (("first", "1"), ("again", "1"), ("two_threads", "2")):
         out = os.path.join(tmp, "%s_%s" % (name, tag))
-        r = run(binary, "run", scenario, "-o", out, "-q", "--threads", threads, *extra, env=env)
+        r = run(binary, "run", scenario, "-o", out, "--threads", threads, *extra, env=env)
         check(r.returncode == 0, "%s (%s) runs: %s" % (name, tag, r.stderr.strip()[-200:]))
+        reused = "levels: reused from" in r.stdout + r.stderr
+        check(reused == (tag != "first"), "%s (%s): the levels' spectra %s the cache"
+              % (name, tag, "measured into" if tag == "first" else "read from"))
         outs[tag] = out
     check(adaptivity_happened(outs["first"]), "%s: splits and several time levels happened" % name)
     for tag in ("again", "two_threads"):

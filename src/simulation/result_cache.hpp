@@ -1,0 +1,51 @@
+#pragma once
+// Set-up results that depend only on a run's inputs and cost time to compute (the coarse levels'
+// calibration, the levels' spectra) are kept between runs, so that sweeps and repeated runs of
+// one hierarchy pay them once. One JSON file per result under $MRSIM_CACHE_DIR/<kind>/ (default
+// $XDG_CACHE_HOME/mrsim/<kind>/, else ~/.cache/mrsim/<kind>/), named by a hash of everything
+// the computation reads; at most 512 files per kind, the oldest going first. Deleting the
+// folder is always safe: the next run computes again.
+#include <cstdint>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace mrsim {
+
+/// FNV-1a (64 bits) of a computation's inputs, fed field by field.
+struct InputHash {
+  std::uint64_t h = 14695981039346656037ull;
+  void bytes(const void* p, std::size_t n);
+  template <class T>
+  void value(const T& v) {
+    bytes(&v, sizeof v);
+  }
+  /// Its points and tets, with their counts.
+  void mesh(const TetMesh& m);
+  /// This build of mrsim (its version and its executable's size and modification time): for
+  /// results whose computation may change with any edit of the code, so that a rebuild never
+  /// reads what another build computed.
+  void build();
+  /// 16 hex digits.
+  std::string hex() const;
+};
+
+/// The folder of one kind of cached result; empty when no folder can be named (no HOME).
+std::filesystem::path result_cache_dir(std::string_view kind);
+
+/// The JSON of `file` when it exists and parses with `key` as its "key" member; nothing when it
+/// is absent. A damaged file is reported by a warning naming `what` and ignored.
+std::optional<nlohmann::json> read_cached_result(const std::filesystem::path& file,
+                                                 const std::string& key, std::string_view what);
+
+/// Stores `result` (its "key" member set to `key`) as `file`, best effort: a folder that cannot
+/// be written gives a warning naming `what`, never an error. Written under a temporary name
+/// unique to the process, then renamed: concurrent runs of a sweep never see a torn file.
+void write_cached_result(const std::filesystem::path& file, const std::string& key,
+                         nlohmann::json result, std::string_view what);
+
+}  // namespace mrsim

@@ -1,0 +1,182 @@
+// The levels' spectra kept between runs (simulation/spectrum_cache.hpp): a second build of the
+// same level reads them and is the same model, bit for bit; any input they read changes the key;
+// a damaged file is said, ignored and rewritten; a folder that cannot be written costs a warning.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "mesh/box_mesh.hpp"
+#include "simulation/result_cache.hpp"
+#include "simulation/spectrum_cache.hpp"
+
+using namespace mrsim;
+
+namespace {
+
+// MRSIM_CACHE_DIR in a fresh folder of its own for the test's life.
+class CacheFolder {
+ public:
+  CacheFolder()
+      : dir_(std::filesystem::path(::testing::TempDir()) /
+             ("mrsim_spectra_" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(dir_);
+    if (const char* old = std::getenv("MRSIM_CACHE_DIR")) saved_ = old;
+    ::setenv("MRSIM_CACHE_DIR", dir_.c_str(), 1);
+  }
+  ~CacheFolder() {
+    std::filesystem::remove_all(dir_);
+    if (saved_.empty())
+      ::unsetenv("MRSIM_CACHE_DIR");
+    else
+      ::setenv("MRSIM_CACHE_DIR", saved_.c_str(), 1);
+  }
+  std::vector<std::filesystem::path> files() const {
+    std::vector<std::filesystem::path> out;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(dir_ / "spectra", ec))
+      out.push_back(e.path());
+    return out;
+  }
+
+ private:
+  std::filesystem::path dir_;
+  std::string saved_;
+};
+
+TetMesh box() { return make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.03, 0.02), 5, 2, 2); }
+
+MaterialLaw law() {
+  MaterialLaw l;
+  l.lambda = 4.0e4;
+  l.mu = 1.0e4;
+  l.psi = 5;
+  return l;
+}
+
+std::vector<std::uint8_t> held(const TetMesh& mesh) {
+  std::vector<std::uint8_t> h(mesh.points.size(), 0);
+  for (size_t i = 0; i < h.size(); ++i) h[i] = mesh.points[i].x() < 1e-9;
+  return h;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+}  // namespace
+
+TEST(SpectrumCache, ASecondBuildReadsTheSpectraAndIsTheSameModel) {
+  CacheFolder folder;
+  const TetMesh mesh = box();
+  bool reused = true;
+  const LevelModel first = cached_level_model(mesh, law(), false, held(mesh), &reused);
+  EXPECT_FALSE(reused);
+  ASSERT_EQ(folder.files().size(), 1u);
+  const LevelModel second = cached_level_model(mesh, law(), false, held(mesh), &reused);
+  EXPECT_TRUE(reused);
+  EXPECT_TRUE(second.K.empty());  // Green–Lagrange, explicit: nothing else reads K
+  for (auto [a, b] : {std::pair{first.spectra.stiffness, second.spectra.stiffness},
+                      std::pair{first.spectra.damping, second.spectra.damping},
+                      std::pair{first.spectra.combined, second.spectra.combined},
+                      std::pair{first.stiffness_spectrum.scale, second.stiffness_spectrum.scale},
+                      std::pair{first.step_damping_scale, second.step_damping_scale},
+                      std::pair{first.time_level_damping_scale,
+                                second.time_level_damping_scale}})
+    EXPECT_TRUE(same_bits(a, b));
+  EXPECT_TRUE(std::isfinite(first.spectra.combined));
+  // Undamped: the combined limit is infinite, and comes back so.
+  MaterialLaw undamped = law();
+  undamped.psi = 0;
+  cached_level_model(mesh, undamped, false, held(mesh));
+  const LevelModel again = cached_level_model(mesh, undamped, false, held(mesh), &reused);
+  EXPECT_TRUE(reused);
+  EXPECT_TRUE(std::isinf(again.spectra.combined));
+}
+
+TEST(SpectrumCache, EveryInputChangesTheKey) {
+  const TetMesh mesh = box();
+  const std::string key = spectrum_key(mesh, law(), false, held(mesh));
+  EXPECT_EQ(key.size(), 16u);
+  EXPECT_EQ(key, spectrum_key(mesh, law(), false, held(mesh)));
+  EXPECT_NE(key, spectrum_key(mesh, law(), true, held(mesh)));
+  EXPECT_NE(key, spectrum_key(mesh, law(), false, {}));
+  MaterialLaw other = law();
+  other.psi = 5.5;
+  EXPECT_NE(key, spectrum_key(mesh, other, false, held(mesh)));
+  other = law();
+  other.strain = StrainMeasure::Cauchy;
+  EXPECT_NE(key, spectrum_key(mesh, other, false, held(mesh)));
+  other = law();
+  other.scales.mu[4] = 1.1;
+  EXPECT_NE(key, spectrum_key(mesh, other, false, held(mesh)));
+  TetMesh moved = mesh;
+  moved.points[3].y() += 1e-12;
+  EXPECT_NE(key, spectrum_key(moved, law(), false, held(mesh)));
+}
+
+TEST(SpectrumCache, ADamagedFileIsSaidIgnoredAndRewritten) {
+  CacheFolder folder;
+  const TetMesh mesh = box();
+  const LevelModel first = cached_level_model(mesh, law(), false, held(mesh));
+  ASSERT_EQ(folder.files().size(), 1u);
+  for (const char* damage : {"{\"key\": ", "{\"key\": \"0000000000000000\"}"}) {
+    { std::ofstream(folder.files()[0]) << damage; }
+    ::testing::internal::CaptureStderr();
+    bool reused = true;
+    const LevelModel m = cached_level_model(mesh, law(), false, held(mesh), &reused);
+    const std::string said = ::testing::internal::GetCapturedStderr();
+    EXPECT_FALSE(reused) << damage;
+    EXPECT_NE(said.find("ignored the level spectra cache"), std::string::npos) << said;
+    EXPECT_TRUE(same_bits(m.step_damping_scale, first.step_damping_scale));
+    cached_level_model(mesh, law(), false, held(mesh), &reused);
+    EXPECT_TRUE(reused) << "rewritten after " << damage;
+  }
+}
+
+TEST(SpectrumCache, AFolderThatCannotBeWrittenCostsAWarning) {
+  const char* old = std::getenv("MRSIM_CACHE_DIR");
+  const std::string saved = old ? old : "";
+  ::setenv("MRSIM_CACHE_DIR", "/dev/null/mrsim", 1);
+  const TetMesh mesh = box();
+  ::testing::internal::CaptureStderr();
+  bool reused = true;
+  const LevelModel m = cached_level_model(mesh, law(), false, held(mesh), &reused);
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  EXPECT_FALSE(reused);
+  EXPECT_NE(said.find("could not write the level spectra cache"), std::string::npos) << said;
+  EXPECT_GT(m.stiffness_spectrum.eigenvalue, 0.0);
+  if (saved.empty())
+    ::unsetenv("MRSIM_CACHE_DIR");
+  else
+    ::setenv("MRSIM_CACHE_DIR", saved.c_str(), 1);
+}
+
+// A folder keyed by the build would grow with every rebuild: past 512 results the oldest go.
+TEST(ResultCache, PastTheLimitTheOldestResultsGo) {
+  CacheFolder folder;
+  const std::filesystem::path dir = result_cache_dir("spectra");
+  std::filesystem::create_directories(dir);
+  const auto now = std::filesystem::file_time_type::clock::now();
+  for (int k = 0; k < 600; ++k) {
+    const std::filesystem::path f = dir / ("old_" + std::to_string(k) + ".json");
+    std::ofstream(f) << "{}";
+    std::filesystem::last_write_time(f, now - std::chrono::hours(1000 - k));
+  }
+  const TetMesh mesh = box();
+  cached_level_model(mesh, law(), false, held(mesh));
+  const auto files = folder.files();
+  EXPECT_EQ(files.size(), 384u);
+  bool newest = false, oldest = false;
+  for (const auto& f : files) {
+    newest |= f.filename().string().rfind("level_spectra_", 0) == 0;
+    oldest |= f.filename() == "old_0.json";
+  }
+  EXPECT_TRUE(newest) << "the result just written stays";
+  EXPECT_FALSE(oldest);
+  bool reused = false;
+  cached_level_model(mesh, law(), false, held(mesh), &reused);
+  EXPECT_TRUE(reused);
+}
