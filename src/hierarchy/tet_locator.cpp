@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include "hierarchy/closest_point.hpp"
 
@@ -78,8 +79,7 @@ std::array<double, 4> TetLocator::barycentric(int t, const Vec3& p) const {
   return {1.0 - b.sum(), b.x(), b.y(), b.z()};
 }
 
-double TetLocator::distance_to_tet(int t, const Vec3& p) const {
-  const auto b = barycentric(t, p);
+double TetLocator::distance_to_tet(int t, const Vec3& p, const std::array<double, 4>& b) const {
   if (*std::min_element(b.begin(), b.end()) >= -kInsideTolerance) return 0;
   static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
   const Tet& v = mesh_.tets[t];
@@ -94,15 +94,17 @@ double TetLocator::distance_to_tet(int t, const Vec3& p) const {
 
 // Best = smallest distance; among containing tets (distance 0), the largest minimum
 // barycentric coordinate; ties broken by the lowest tet index (candidates come in any order).
-void TetLocator::consider(int t, const Vec3& p, TetLocation& best, double& best_key) const {
+double TetLocator::box_gap(int t, const Vec3& p) const {
+  return (box_lo_[t] - p).cwiseMax(p - box_hi_[t]).cwiseMax(0.0).norm();
+}
+
+void TetLocator::consider(int t, double gap, const Vec3& p, TetLocation& best,
+                          double& best_key) const {
   // A tet whose bounding box is farther than the best so far cannot win nor tie (the margin
   // covers rounding): skipped without its four closest-point queries. The result is the same.
-  if (best.tet >= 0) {
-    const Vec3 gap = (box_lo_[t] - p).cwiseMax(p - box_hi_[t]).cwiseMax(0.0);
-    if (gap.norm() > std::max(best_key, 0.0) * (1 + 1e-9) + 1e-300) return;
-  }
-  const double d = distance_to_tet(t, p);
+  if (best.tet >= 0 && gap > std::max(best_key, 0.0) * (1 + 1e-9) + 1e-300) return;
   const auto b = barycentric(t, p);
+  const double d = distance_to_tet(t, p, b);
   const double key = d > 0 ? d : -*std::min_element(b.begin(), b.end());
   if (best.tet < 0 || key < best_key || (key == best_key && t < best.tet)) {
     best.tet = t;
@@ -138,6 +140,7 @@ int TetLocator::containing(const Vec3& p) const {
 namespace {
 struct Stamps {
   std::vector<std::uint32_t> of_tet;
+  std::vector<std::pair<double, int>> candidates;  // one cell's new tets, by box gap
   std::uint32_t query = 0;
   void next(std::size_t tets) {
     if (of_tet.size() < tets) of_tet.resize(tets, 0);
@@ -162,9 +165,15 @@ TetLocation TetLocator::locate(const Vec3& p) const {
   double best_key = 0;
   stamps.next(mesh_.tets.size());
   const auto c = cell_of(p);
+  // A cell's new tets nearest box first: the best comes early and prunes the rest.
+  std::vector<std::pair<double, int>>& near = stamps.candidates;
   auto visit = [&](int cell) {
+    near.clear();
     for (int s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s)
-      if (stamps.first_time(cell_tets_[s])) consider(cell_tets_[s], p, best, best_key);
+      if (stamps.first_time(cell_tets_[s]))
+        near.emplace_back(box_gap(cell_tets_[s], p), cell_tets_[s]);
+    std::sort(near.begin(), near.end());
+    for (const auto& [gap, t] : near) consider(t, gap, p, best, best_key);
   };
   visit(cell_index(c[0], c[1], c[2]));
   if (best.tet >= 0 && best.distance == 0) return best;
@@ -174,11 +183,13 @@ TetLocation TetLocator::locate(const Vec3& p) const {
   // same.
   const int max_ring = std::max({dims_[0], dims_[1], dims_[2]});
   for (int r = 1; r <= max_ring; ++r) {
-    for (int k = c[2] - r; k <= c[2] + r; ++k)
-      for (int j = c[1] - r; j <= c[1] + r; ++j)
-        for (int i = c[0] - r; i <= c[0] + r; ++i) {
-          if (std::max({std::abs(i - c[0]), std::abs(j - c[1]), std::abs(k - c[2])}) != r) continue;
-          if (i < 0 || j < 0 || k < 0 || i >= dims_[0] || j >= dims_[1] || k >= dims_[2]) continue;
+    for (int k = std::max(c[2] - r, 0); k <= std::min(c[2] + r, dims_[2] - 1); ++k)
+      for (int j = std::max(c[1] - r, 0); j <= std::min(c[1] + r, dims_[1] - 1); ++j) {
+        // The ring's shell only: inside its two faces in k and j, just the two ends in i.
+        const bool face = std::abs(k - c[2]) == r || std::abs(j - c[1]) == r;
+        const int step = face ? 1 : 2 * r;
+        for (int i = c[0] - r; i <= c[0] + r; i += step) {
+          if (i < 0 || i >= dims_[0]) continue;
           if (best.tet >= 0) {
             const Vec3 cell_lo = lo_ + h_ * Vec3(i, j, k), cell_hi = cell_lo + Vec3::Constant(h_);
             const Vec3 gap = (cell_lo - p).cwiseMax(p - cell_hi).cwiseMax(0.0);
@@ -186,6 +197,7 @@ TetLocation TetLocator::locate(const Vec3& p) const {
           }
           visit(cell_index(i, j, k));
         }
+      }
     // Every tet not yet seen lies in cells at least r·h away from p's cell.
     if (best.tet >= 0 && best.distance <= r * h_) break;
   }

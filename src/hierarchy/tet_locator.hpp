@@ -31,8 +31,11 @@ class TetLocator {
  private:
   int cell_index(int i, int j, int k) const { return i + dims_[0] * (j + dims_[1] * k); }
   std::array<int, 3> cell_of(const Vec3& p) const;
-  double distance_to_tet(int t, const Vec3& p) const;
-  void consider(int t, const Vec3& p, TetLocation& best, double& best_key) const;
+  /// 0 when b (p's barycentric coordinates in t) is inside, else the distance to t.
+  double distance_to_tet(int t, const Vec3& p, const std::array<double, 4>& b) const;
+  /// Distance from p to t's bounding box: a lower bound of its distance.
+  double box_gap(int t, const Vec3& p) const;
+  void consider(int t, double gap, const Vec3& p, TetLocation& best, double& best_key) const;
 
   const TetMesh& mesh_;
   std::vector<Mat3> inverse_;  // D_t^{-1}, for barycentrics
