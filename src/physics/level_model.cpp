@@ -85,7 +85,7 @@ void apply_spectra(LevelModel& m, bool semi_implicit, const LevelSpectra& s) {
       c_max = std::max(c_max, p.damping / p.mass);
     }
   }
-  m.spectra = s;
+  m.combined_limit = s.combined;
   m.stiffness_spectrum = spectral_scale(s.stiffness, k_max);
   m.damping_spectrum = spectral_scale(s.damping, c_max);
   m.step_damping_scale = m.time_level_damping_scale = m.damping_spectrum.scale;
@@ -124,6 +124,11 @@ PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit,
     p.stiffness *= m.stiffness_spectrum.scale;
   p.damping *= m.step_damping_scale;
   return p;
+}
+
+LevelSpectra level_spectra(const LevelModel& m) {
+  return {m.stiffness_spectrum.eigenvalue, m.damping_spectrum.eigenvalue,
+          m.filter_spectrum.eigenvalue, m.combined_limit};
 }
 
 bool edge_matrices_needed(const MaterialLaw& law, bool semi_implicit) {

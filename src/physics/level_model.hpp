@@ -55,7 +55,9 @@ struct LevelModel {
   // The same for time levels, whose stiffness bounds stay the proven ones (damping_calibrated()).
   double time_level_damping_scale = 1;
   std::vector<PointInertia> star;  // mass and bounds of each point's whole star
-  LevelSpectra spectra;            // measured or given (build_level_model())
+  // combined_step_limit() of the level (infinite when undamped): the one measurement of
+  // level_spectra() its scales do not hold.
+  double combined_limit = std::numeric_limits<double>::infinity();
 
   int num_points() const { return adj.num_points(); }
   int num_tets() const { return static_cast<int>(geo.tets.size()); }
@@ -64,12 +66,15 @@ struct LevelModel {
 /// `semi_implicit`: also measure the filtered spectrum (one more Lanczos run). `held`: the
 /// level's held points (select_fixed_points()), or empty; the spectra are those of the free
 /// points, which the step has to keep stable. `known`: the spectra of this mesh, law, held mask
-/// and integrator family measured before (LevelModel::spectra of an earlier build): no Lanczos
+/// and integrator family measured before (level_spectra() of an earlier build): no Lanczos
 /// run, and no edge matrices where nothing else needs them.
 LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law,
                              bool semi_implicit = false,
                              const std::vector<std::uint8_t>& held = {},
                              const LevelSpectra* known = nullptr);
+
+/// What the level's Lanczos runs measured (or were given), as build_level_model() takes it.
+LevelSpectra level_spectra(const LevelModel& m);
 
 /// Does a level of this law need K and D beyond its spectra? The Cauchy force gathers them and
 /// the semi-implicit filter takes K's diagonal blocks; the Green–Lagrange force does not.

@@ -2,7 +2,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/log.hpp"
 #include "simulation/result_cache.hpp"
 
 namespace mrsim {
@@ -60,19 +59,13 @@ std::filesystem::path calibration_cache_dir() { return result_cache_dir("calibra
 std::optional<std::vector<LevelCalibration>> read_cached_calibration(
     const std::filesystem::path& dir, const std::string& key, std::size_t levels) {
   if (dir.empty()) return std::nullopt;
-  const std::filesystem::path file = file_of(dir, key);
-  const std::optional<nlohmann::json> j = read_cached_result(file, key, "calibration");
-  if (!j) return std::nullopt;
-  try {
-    std::vector<LevelCalibration> out;
-    for (const nlohmann::json& level : j->at("levels")) out.push_back(from_json(level));
+  std::vector<LevelCalibration> out;
+  const bool read = read_cached_result(file_of(dir, key), key, "calibration", [&](const nlohmann::json& j) {
+    for (const nlohmann::json& level : j.at("levels")) out.push_back(from_json(level));
     if (out.size() != levels) throw std::runtime_error("another number of levels");
-    return out;
-  } catch (const std::exception& e) {
-    warn("ignored the calibration cache " + file.string() + " (" + e.what() +
-         "); computing it again");
-    return std::nullopt;
-  }
+  });
+  if (!read) return std::nullopt;
+  return out;
 }
 
 void write_cached_calibration(const std::filesystem::path& dir, const std::string& key,

@@ -56,18 +56,20 @@ std::filesystem::path result_cache_dir(std::string_view kind) {
   return {};
 }
 
-std::optional<nlohmann::json> read_cached_result(const std::filesystem::path& file,
-                                                 const std::string& key, std::string_view what) {
+bool read_cached_result(const std::filesystem::path& file, const std::string& key,
+                        std::string_view what,
+                        const std::function<void(const nlohmann::json&)>& take) {
   std::error_code ec;
-  if (file.empty() || !std::filesystem::is_regular_file(file, ec)) return std::nullopt;
+  if (file.empty() || !std::filesystem::is_regular_file(file, ec)) return false;
   try {
-    nlohmann::json j = nlohmann::json::parse(read_text_if_any(file));
+    const nlohmann::json j = nlohmann::json::parse(read_text_if_any(file));
     if (j.at("key").get<std::string>() != key) throw std::runtime_error("another key");
-    return j;
+    take(j);
+    return true;
   } catch (const std::exception& e) {
     warn("ignored the " + std::string(what) + " cache " + file.string() + " (" + e.what() +
          "); computing it again");
-    return std::nullopt;
+    return false;
   }
 }
 

@@ -7,8 +7,8 @@
 // folder is always safe: the next run computes again.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -37,10 +37,13 @@ struct InputHash {
 /// The folder of one kind of cached result; empty when no folder can be named (no HOME).
 std::filesystem::path result_cache_dir(std::string_view kind);
 
-/// The JSON of `file` when it exists and parses with `key` as its "key" member; nothing when it
-/// is absent. A damaged file is reported by a warning naming `what` and ignored.
-std::optional<nlohmann::json> read_cached_result(const std::filesystem::path& file,
-                                                 const std::string& key, std::string_view what);
+/// Hands `take` the JSON of `file` when it exists and has `key` as its "key" member; true when
+/// `take` returned. A damaged file (unparsable, another key, or `take` throwing on what it
+/// reads) is reported by a warning naming `what`, ignored, and false returned; so is an absent
+/// one, silently.
+bool read_cached_result(const std::filesystem::path& file, const std::string& key,
+                        std::string_view what,
+                        const std::function<void(const nlohmann::json&)>& take);
 
 /// Stores `result` (its "key" member set to `key`) as `file`, best effort: a folder that cannot
 /// be written gives a warning naming `what`, never an error. Written under a temporary name

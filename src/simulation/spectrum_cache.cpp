@@ -5,7 +5,6 @@
 #include <optional>
 #include <stdexcept>
 
-#include "core/log.hpp"
 #include "simulation/result_cache.hpp"
 
 namespace mrsim {
@@ -41,24 +40,18 @@ nlohmann::json to_json(const LevelSpectra& s, const TetMesh& mesh) {
 }
 
 std::optional<LevelSpectra> read(const std::string& key, const TetMesh& mesh) {
-  const std::filesystem::path file = file_of(key);
-  const std::optional<nlohmann::json> j = read_cached_result(file, key, "level spectra");
-  if (!j) return std::nullopt;
-  try {
-    if (j->at("points").get<std::size_t>() != mesh.points.size() ||
-        j->at("tets").get<std::size_t>() != mesh.tets.size())
+  LevelSpectra s;
+  const bool read = read_cached_result(file_of(key), key, "level spectra", [&](const nlohmann::json& j) {
+    if (j.at("points").get<std::size_t>() != mesh.points.size() ||
+        j.at("tets").get<std::size_t>() != mesh.tets.size())
       throw std::runtime_error("another mesh");
-    LevelSpectra s;
-    s.stiffness = exact(*j, "stiffness");
-    s.damping = exact(*j, "damping");
-    s.filtered = exact(*j, "filtered");
-    s.combined = exact(*j, "combined");
-    return s;
-  } catch (const std::exception& e) {
-    warn("ignored the level spectra cache " + file.string() + " (" + e.what() +
-         "); computing it again");
-    return std::nullopt;
-  }
+    s.stiffness = exact(j, "stiffness");
+    s.damping = exact(j, "damping");
+    s.filtered = exact(j, "filtered");
+    s.combined = exact(j, "combined");
+  });
+  if (!read) return std::nullopt;
+  return s;
 }
 
 }  // namespace
@@ -86,7 +79,7 @@ LevelModel cached_level_model(const TetMesh& mesh, const MaterialLaw& law, bool 
   if (reused) *reused = known.has_value();
   if (known) return build_level_model(mesh, law, semi_implicit, held, &*known);
   LevelModel m = build_level_model(mesh, law, semi_implicit, held);
-  write_cached_result(file_of(key), key, to_json(m.spectra, mesh), "level spectra");
+  write_cached_result(file_of(key), key, to_json(level_spectra(m), mesh), "level spectra");
   return m;
 }
 
