@@ -40,7 +40,7 @@ Handle empty_space(const ExtendibleSpec& spec, Where where) {
 }  // namespace
 
 hsize_t chunk_rows_for(hsize_t row_bytes, hsize_t max_rows) {
-  constexpr hsize_t kTargetChunkBytes = 64 * 1024;
+  constexpr hsize_t kTargetChunkBytes = 4 * 1024;
   const hsize_t rows = kTargetChunkBytes / std::max<hsize_t>(row_bytes, 1);
   return std::clamp<hsize_t>(rows, 1, std::max<hsize_t>(max_rows, 1));
 }

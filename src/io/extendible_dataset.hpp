@@ -71,8 +71,10 @@ class ExtendibleDataset {
   std::string file_;
 };
 
-/// Chunk rows for rows of `row_bytes` bytes: about 64 KiB per chunk (at least 1 row, at most
-/// `max_rows`), large enough to compress well and small enough to rewrite at every flush.
+/// Chunk rows for rows of `row_bytes` bytes: about 4 KiB per chunk (at least 1 row, at most
+/// `max_rows`). Every frame's flush rewrites each growing dataset's last chunk whole, so the
+/// chunk is what a frame costs in writes (liver_probe: 45 MB written for its log with 64 KiB
+/// chunks, 7 MB with 4 KiB).
 hsize_t chunk_rows_for(hsize_t row_bytes, hsize_t max_rows);
 
 }  // namespace mrsim::h5

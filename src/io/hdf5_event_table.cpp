@@ -7,7 +7,7 @@
 namespace mrsim::h5 {
 namespace {
 
-constexpr hsize_t kEventChunkRows = 4096;
+constexpr hsize_t kEventChunkRows = 256;
 
 ExtendibleSpec event_spec(const char* name, hid_t file_type, const char* description) {
   ExtendibleSpec spec;

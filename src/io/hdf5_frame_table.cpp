@@ -11,7 +11,7 @@
 namespace mrsim::h5 {
 namespace {
 
-constexpr hsize_t kScalarChunkRows = 1024;
+constexpr hsize_t kScalarChunkRows = 128;
 
 template <class T>
 ExtendibleSpec scalar_spec(const char* name, const char* units, const char* description) {

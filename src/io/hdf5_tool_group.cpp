@@ -11,9 +11,9 @@
 namespace mrsim::h5 {
 namespace {
 
-// One row per simulation step: many more rows than /frames, hence larger chunks (capped at
-// about 64 KiB by chunk_rows_for).
-constexpr hsize_t kSampleChunkRows = 4096;
+// One row per simulation step: more rows per frame than /frames, hence more rows per chunk
+// (still about 4 KiB, chunk_rows_for: each frame's flush rewrites the last chunk).
+constexpr hsize_t kSampleChunkRows = 512;
 
 template <class T>
 ExtendibleSpec sample_spec(const char* name, hsize_t columns, const char* units,

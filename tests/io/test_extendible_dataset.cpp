@@ -134,10 +134,12 @@ TEST(ExtendibleDataset, ConvertingWritesOfAnySizeStoreTheirValues) {
   EXPECT_EQ(back.values.back(), numbers.back());
 }
 
-TEST(ExtendibleDataset, ChunkRowsAimAtAboutSixtyFourKibibytes) {
-  EXPECT_EQ(h5::chunk_rows_for(8, 1024), 1024u);        // scalars: capped
-  EXPECT_EQ(h5::chunk_rows_for(1000, 16), 16u);         // small level: capped
-  EXPECT_EQ(h5::chunk_rows_for(8192, 16), 8u);
+TEST(ExtendibleDataset, ChunkRowsAimAtAboutFourKibibytes) {
+  EXPECT_EQ(h5::chunk_rows_for(8, 1024), 512u);
+  EXPECT_EQ(h5::chunk_rows_for(8, 128), 128u);          // scalars: capped
+  EXPECT_EQ(h5::chunk_rows_for(56, 128), 73u);          // the seven time parts
+  EXPECT_EQ(h5::chunk_rows_for(1000, 16), 4u);
+  EXPECT_EQ(h5::chunk_rows_for(8192, 16), 1u);
   EXPECT_EQ(h5::chunk_rows_for(1'000'000, 16), 1u);     // huge rows: one per chunk
   EXPECT_EQ(h5::chunk_rows_for(0, 16), 16u);
 }
