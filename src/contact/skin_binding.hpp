@@ -17,7 +17,10 @@ struct SkinBinding {
 };
 
 SkinBinding bind_skin(const Skin& skin, const std::vector<const TetMesh*>& levels);
-/// The same with each level's locator given (shared with the level links).
-SkinBinding bind_skin(const Skin& skin, const std::vector<TetLocator>& levels);
+/// The same with each level's locator given (shared with the level links). When the skin is
+/// the finest level's boundary, `finest_in_coarser` (the finest points' parent tets, located
+/// by the same locator) answers for the level below the finest without locating again.
+SkinBinding bind_skin(const Skin& skin, const std::vector<TetLocator>& levels,
+                      const Embedding* finest_in_coarser = nullptr);
 
 }  // namespace mrsim

@@ -49,12 +49,7 @@ TetLocator::TetLocator(const TetMesh& mesh) : mesh_(mesh) {
   const int ncells = dims_[0] * dims_[1] * dims_[2];
   cell_start_.assign(ncells + 1, 0);
   auto for_cells = [&](size_t t, auto&& fn) {
-    Vec3 a = mesh.points[mesh.tets[t][0]], b = a;
-    for (int v : mesh.tets[t]) {
-      a = a.cwiseMin(mesh.points[v]);
-      b = b.cwiseMax(mesh.points[v]);
-    }
-    const auto ca = cell_of(a), cb = cell_of(b);
+    const auto ca = cell_of(box_lo_[t]), cb = cell_of(box_hi_[t]);
     for (int k = ca[2]; k <= cb[2]; ++k)
       for (int j = ca[1]; j <= cb[1]; ++j)
         for (int i = ca[0]; i <= cb[0]; ++i) fn(cell_index(i, j, k));
@@ -124,6 +119,14 @@ int TetLocator::containing(const Vec3& p) const {
   double best_min = 0;
   for (int s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
     const int t = cell_tets_[s];
+    // A point whose coordinates are all ≥ −ε lies within the tet's box grown by 3ε of its
+    // extent (p = Σ b_k x_k, Σ b_k = 1): a box grown by 1e-6 of it keeps every tet that can
+    // pass the test below, with room for the rounding of the coordinates, and costs six
+    // comparisons instead of a barycentric solve for the cell's other tets.
+    const Vec3 slack = Vec3::Constant(1e-6 * (box_hi_[t] - box_lo_[t]).maxCoeff());
+    if ((p.array() < (box_lo_[t] - slack).array()).any() ||
+        (p.array() > (box_hi_[t] + slack).array()).any())
+      continue;
     const auto b = barycentric(t, p);
     const double m = *std::min_element(b.begin(), b.end());
     if (m < -kInsideTolerance) continue;

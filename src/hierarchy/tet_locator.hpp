@@ -27,6 +27,7 @@ class TetLocator {
   int containing(const Vec3& p) const;
   /// Barycentric coordinates of p in tet t (signed).
   std::array<double, 4> barycentric(int t, const Vec3& p) const;
+  const TetMesh& mesh() const { return mesh_; }
 
  private:
   int cell_index(int i, int j, int k) const { return i + dims_[0] * (j + dims_[1] * k); }

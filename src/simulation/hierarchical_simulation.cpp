@@ -101,7 +101,8 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   load_factors_.assign(loads_.size(), 0.0);
   if (!setup.tools.empty()) {
     Skin skin = setup.skin ? *setup.skin : boundary_skin(*meshes.back());
-    SkinBinding binding = bind_skin(skin, locators);
+    SkinBinding binding =
+        bind_skin(skin, locators, L >= 2 ? &hierarchy_->links(L - 1).parent_tet : nullptr);
     contact_ = std::make_unique<SkinContact>(std::move(skin), std::move(binding), setup.tools,
                                              setup.law.lambda + 2.0 * setup.law.mu);
   }
