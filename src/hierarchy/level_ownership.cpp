@@ -55,16 +55,20 @@ LevelOwnership::LevelOwnership(const Hierarchy& h)
       start_[l][t + 1] = start_[l][t] + static_cast<std::int32_t>(std::clamp(n, 1.0, 4096.0));
     }
     where_[l].resize(static_cast<std::size_t>(start_[l].back()) * levels_);
+    // Consecutive samples lie in one tet of l: each level's last answer is tried first.
+    std::vector<int> last(levels_, -1);
     for (std::size_t t = 0; t < mesh.tets.size(); ++t)
       for (std::int32_t s = start_[l][t]; s < start_[l][t + 1]; ++s) {
         const auto w = uniform_bary((static_cast<std::uint64_t>(l) << 40) + s);
         Vec3 x = Vec3::Zero();
         for (int a = 0; a < 4; ++a) x += w[a] * mesh.points[mesh.tets[t][a]];
         std::int32_t* at = &where_[l][static_cast<std::size_t>(s) * levels_];
-        for (int m = 0; m < levels_; ++m)
+        for (int m = 0; m < levels_; ++m) {
           // -1 outside level m's mesh: independent meshes of one object do not share their
           // boundary, and a level claims only what its tets cover.
-          at[m] = m == l ? static_cast<std::int32_t>(t) : locators[m].containing(x);
+          if (m != l) last[m] = locators[m].containing(x, last[m]);
+          at[m] = m == l ? static_cast<std::int32_t>(t) : last[m];
+        }
       }
   }
 }

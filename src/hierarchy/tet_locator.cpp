@@ -138,6 +138,17 @@ int TetLocator::containing(const Vec3& p) const {
   return best;
 }
 
+int TetLocator::containing(const Vec3& p, int hint) const {
+  // Another tet wins only with a larger smallest coordinate, i.e. holding p by more than this
+  // margin too: the two would overlap. 1e-4 leaves room for the coordinates' rounding.
+  constexpr double kClearlyInside = 1e-4;
+  if (hint >= 0 && hint < static_cast<int>(inverse_.size())) {
+    const auto b = barycentric(hint, p);
+    if (*std::min_element(b.begin(), b.end()) >= kClearlyInside) return hint;
+  }
+  return containing(p);
+}
+
 // Tets overlap several cells: a query meets the same tet in each. The tets it has considered
 // are stamped (per thread: locate() runs in parallel loops) so that each is measured once.
 namespace {

@@ -86,7 +86,7 @@ TEST(TetLocator, ContainingIsTheBestHoldingTetAndMinusOneOutside) {
   const TetLocator loc(m);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> d(-0.1, 1.1);
-  int inside = 0, outside = 0;
+  int inside = 0, outside = 0, previous = -1;
   auto check = [&](const Vec3& p) {
     int best = -1;
     double best_min = 0;
@@ -96,6 +96,11 @@ TEST(TetLocator, ContainingIsTheBestHoldingTetAndMinusOneOutside) {
       if (low >= -1e-12 && (best < 0 || low > best_min)) best = t, best_min = low;
     }
     EXPECT_EQ(loc.containing(p), best) << p.transpose();
+    // A hint changes the work, never the answer: the right tet, a neighbour's, any, none.
+    const int any = static_cast<int>(rng() % m.tets.size());
+    for (const int hint : {best, previous, any, -1})
+      EXPECT_EQ(loc.containing(p, hint), best) << p.transpose() << ", hint " << hint;
+    previous = best;
     EXPECT_EQ(loc.locate(p).inside(), best >= 0) << p.transpose();
     if (best >= 0) {
       EXPECT_EQ(loc.locate(p).tet, best) << p.transpose();

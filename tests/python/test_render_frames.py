@@ -27,7 +27,14 @@ def render(script, run_dir, out, *options, xvfb=True, env=None):
     cmd = ["/usr/bin/python3", script, run_dir, "-o", out, "--size", "%dx%d" % SIZE, *options]
     if xvfb:
         cmd = ["xvfb-run", "-a"] + cmd
-    return subprocess.run(cmd, capture_output=True, text=True, timeout=300, env=env)
+    for _ in range(3):
+        r = subprocess.run(cmd, capture_output=True, text=True, timeout=300, env=env)
+        # xvfb-run's own clean-up can race with xauth under load and then exits 5 whatever the
+        # script returned (seen once in a fresh-clone run, 2026-11-29): that says nothing about
+        # render_frames, so run it again.
+        if not (xvfb and r.returncode == 5 and "problem while cleaning up" in r.stderr):
+            break
+    return r
 
 
 def read_png(path):
