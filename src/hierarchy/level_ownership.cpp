@@ -64,10 +64,13 @@ LevelOwnership::LevelOwnership(const Hierarchy& h)
         for (int a = 0; a < 4; ++a) x += w[a] * mesh.points[mesh.tets[t][a]];
         std::int32_t* at = &where_[l][static_cast<std::size_t>(s) * levels_];
         for (int m = 0; m < levels_; ++m) {
+          if (m == l) {
+            at[m] = static_cast<std::int32_t>(t);
+            continue;
+          }
           // -1 outside level m's mesh: independent meshes of one object do not share their
           // boundary, and a level claims only what its tets cover.
-          if (m != l) last[m] = locators[m].containing(x, last[m]);
-          at[m] = m == l ? static_cast<std::int32_t>(t) : last[m];
+          at[m] = last[m] = locators[m].containing(x, last[m]);
         }
       }
   }

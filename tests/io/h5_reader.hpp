@@ -54,6 +54,14 @@ inline std::vector<hsize_t> dims_of(hid_t dataset, std::vector<hsize_t>* max_dim
   return dims;
 }
 
+/// Bytes of one chunk of a chunked dataset (its element size times its chunk's extent).
+inline hsize_t chunk_bytes(hid_t dataset, const std::vector<hsize_t>& chunk) {
+  H5Id type(H5Dget_type(dataset), H5Tclose);
+  hsize_t bytes = H5Tget_size(type);
+  for (const hsize_t c : chunk) bytes *= c;
+  return bytes;
+}
+
 template <class T>
 struct Array {
   std::vector<hsize_t> dims;
