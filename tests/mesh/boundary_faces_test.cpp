@@ -58,7 +58,6 @@ TEST(BoundaryFaces, SameListAndOrderAsSortingEveryFace) {
   const std::vector<Face> got = boundary_faces(m);
   EXPECT_GT(got.size(), 2u * 2 * (7 * 5 + 7 * 3 + 5 * 3));  // more than the box's hull
   EXPECT_EQ(got, expected);
-  EXPECT_EQ(boundary_faces_by_triples(m), expected);  // the form past 2^21 points
 }
 
 }  // namespace
