@@ -23,18 +23,22 @@ TetLocator::TetLocator(const TetMesh& mesh) : mesh_(mesh) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  box_lo_.resize(nt);
-  box_hi_.resize(nt);
+  // The grid is built on the exact boxes, the tests use the grown ones (Box).
+  std::vector<Box> exact(nt);
+  box_.resize(nt);
   for (size_t t = 0; t < nt; ++t) {
     const Tet& v = mesh.tets[t];
     Mat3 D;
     for (int k = 0; k < 3; ++k) D.col(k) = mesh.points[v[k + 1]] - mesh.points[v[0]];
     inverse_[t] = D.inverse();
-    box_lo_[t] = box_hi_[t] = mesh.points[v[0]];
+    Box& b = exact[t];
+    b.lo = b.hi = mesh.points[v[0]];
     for (int a = 1; a < 4; ++a) {
-      box_lo_[t] = box_lo_[t].cwiseMin(mesh.points[v[a]]);
-      box_hi_[t] = box_hi_[t].cwiseMax(mesh.points[v[a]]);
+      b.lo = b.lo.cwiseMin(mesh.points[v[a]]);
+      b.hi = b.hi.cwiseMax(mesh.points[v[a]]);
     }
+    const Vec3 slack = Vec3::Constant(1e-6 * (b.hi - b.lo).maxCoeff());
+    box_[t] = {b.lo - slack, b.hi + slack};
   }
   // About one tet per cell: h³ ≈ bbox volume / T, capped so the grid stays bounded.
   const Vec3 ext = (hi - lo).cwiseMax(1e-12);
@@ -49,7 +53,7 @@ TetLocator::TetLocator(const TetMesh& mesh) : mesh_(mesh) {
   const int ncells = dims_[0] * dims_[1] * dims_[2];
   cell_start_.assign(ncells + 1, 0);
   auto for_cells = [&](size_t t, auto&& fn) {
-    const auto ca = cell_of(box_lo_[t]), cb = cell_of(box_hi_[t]);
+    const auto ca = cell_of(exact[t].lo), cb = cell_of(exact[t].hi);
     for (int k = ca[2]; k <= cb[2]; ++k)
       for (int j = ca[1]; j <= cb[1]; ++j)
         for (int i = ca[0]; i <= cb[0]; ++i) fn(cell_index(i, j, k));
@@ -64,8 +68,12 @@ TetLocator::TetLocator(const TetMesh& mesh) : mesh_(mesh) {
 
 std::array<int, 3> TetLocator::cell_of(const Vec3& p) const {
   std::array<int, 3> c;
-  for (int k = 0; k < 3; ++k)
-    c[k] = std::clamp(static_cast<int>(std::floor((p[k] - lo_[k]) / h_)), 0, dims_[k] - 1);
+  for (int k = 0; k < 3; ++k) {
+    // floor() then a clamp to [0, dims − 1]: truncation is the floor for x ≥ 0, and x < 0 (or
+    // NaN) is cell 0 either way. Clamped as a double, far points convert without overflow.
+    const double x = (p[k] - lo_[k]) / h_;
+    c[k] = x >= 0 ? static_cast<int>(std::min(x, dims_[k] - 1.0)) : 0;
+  }
   return c;
 }
 
@@ -90,15 +98,31 @@ double TetLocator::distance_to_tet(int t, const Vec3& p, const std::array<double
 // Best = smallest distance; among containing tets (distance 0), the largest minimum
 // barycentric coordinate; ties broken by the lowest tet index (candidates come in any order).
 double TetLocator::box_gap(int t, const Vec3& p) const {
-  return (box_lo_[t] - p).cwiseMax(p - box_hi_[t]).cwiseMax(0.0).norm();
+  return (box_[t].lo - p).cwiseMax(p - box_[t].hi).cwiseMax(0.0).norm();
+}
+
+double TetLocator::plane_gap(int t, const std::array<double, 4>& b) const {
+  // λ_k's gradient is row k of D⁻¹ (k = 1..3), and minus their sum for k = 0: the distance to
+  // face k's plane is −λ_k / |∇λ_k|.
+  const Mat3& inv = inverse_[t];
+  double gap = 0;
+  for (int k = 0; k < 4; ++k)
+    if (b[k] < 0) {
+      const Vec3 grad = k == 0 ? Vec3(-inv.colwise().sum().transpose()) : Vec3(inv.row(k - 1));
+      gap = std::max(gap, -b[k] / grad.norm());
+    }
+  return gap;
 }
 
 void TetLocator::consider(int t, double gap, const Vec3& p, TetLocation& best,
                           double& best_key) const {
-  // A tet whose bounding box is farther than the best so far cannot win nor tie (the margin
-  // covers rounding): skipped without its four closest-point queries. The result is the same.
-  if (best.tet >= 0 && gap > std::max(best_key, 0.0) * (1 + 1e-9) + 1e-300) return;
+  // A tet whose bounding box, or a face's plane, is farther than the best so far cannot win
+  // nor tie (the margins cover rounding): skipped without its four closest-point queries. The
+  // result is the same.
+  const double bound = std::max(best_key, 0.0) * (1 + 1e-9) + 1e-300;
+  if (best.tet >= 0 && gap > bound) return;
   const auto b = barycentric(t, p);
+  if (best.tet >= 0 && plane_gap(t, b) * (1 - 1e-6) > bound) return;
   const double d = distance_to_tet(t, p, b);
   const double key = d > 0 ? d : -*std::min_element(b.begin(), b.end());
   if (best.tet < 0 || key < best_key || (key == best_key && t < best.tet)) {
@@ -119,13 +143,10 @@ int TetLocator::containing(const Vec3& p) const {
   double best_min = 0;
   for (int s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
     const int t = cell_tets_[s];
-    // A point whose coordinates are all ≥ −ε lies within the tet's box grown by 3ε of its
-    // extent (p = Σ b_k x_k, Σ b_k = 1): a box grown by 1e-6 of it keeps every tet that can
-    // pass the test below, with room for the rounding of the coordinates, and costs six
-    // comparisons instead of a barycentric solve for the cell's other tets.
-    const Vec3 slack = Vec3::Constant(1e-6 * (box_hi_[t] - box_lo_[t]).maxCoeff());
-    if ((p.array() < (box_lo_[t] - slack).array()).any() ||
-        (p.array() > (box_hi_[t] + slack).array()).any())
+    // Six comparisons instead of a barycentric solve for the cell's other tets.
+    const Box& box = box_[t];
+    if (p.x() < box.lo.x() || p.y() < box.lo.y() || p.z() < box.lo.z() || p.x() > box.hi.x() ||
+        p.y() > box.hi.y() || p.z() > box.hi.z())
       continue;
     const auto b = barycentric(t, p);
     const double m = *std::min_element(b.begin(), b.end());

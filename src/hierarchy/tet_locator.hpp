@@ -40,11 +40,23 @@ class TetLocator {
   double distance_to_tet(int t, const Vec3& p, const std::array<double, 4>& b) const;
   /// Distance from p to t's bounding box: a lower bound of its distance.
   double box_gap(int t, const Vec3& p) const;
+  /// Distance from p (barycentric coordinates b in t) to the farthest plane of t's faces that
+  /// p is beyond: another lower bound of its distance, and a tight one when the nearest point
+  /// lies inside a face.
+  double plane_gap(int t, const std::array<double, 4>& b) const;
   void consider(int t, double gap, const Vec3& p, TetLocation& best, double& best_key) const;
+
+  /// A tet's bounding box grown by 1e-6 of its extent: a point whose barycentric coordinates
+  /// are all ≥ −ε lies within the box grown by 3ε of it (p = Σ b_k x_k, Σ b_k = 1), so the box
+  /// keeps every tet that can hold a point, with room for the coordinates' rounding; its gap to
+  /// a point is a lower bound of the tet's distance.
+  struct Box {
+    Vec3 lo, hi;
+  };
 
   const TetMesh& mesh_;
   std::vector<Mat3> inverse_;  // D_t^{-1}, for barycentrics
-  std::vector<Vec3> box_lo_, box_hi_;  // bounding box of each tet: a lower bound of its distance
+  std::vector<Box> box_;       // one cache line per tet tested, both corners together
   Vec3 lo_;
   double h_ = 1;
   std::array<int, 3> dims_{1, 1, 1};
