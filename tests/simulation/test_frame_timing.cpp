@@ -19,8 +19,9 @@ double part(const TaskClock::Parts& p, Task t) { return p[static_cast<int>(t)]; 
 TEST(FrameTiming, PhasesDoNotCountTheInnerTimersTwice) {
   TaskClock clock;
   clock.add(Task::Output, 5.0);  // an earlier frame: not part of this one
-  FrameTiming timing(clock);
+  // Read before the frame's own clock starts: the frame lies within [t0, now()].
   const auto t0 = TaskClock::Clock::now();
+  FrameTiming timing(clock);
   timing.phase(Task::Integration, [&] {
     std::this_thread::sleep_for(30ms);
     clock.add(Task::InternalForces, 0.010);  // what a force field's TaskTimer counted inside
