@@ -76,7 +76,8 @@ LevelOwnership::LevelOwnership(const Hierarchy& h)
   }
 }
 
-void LevelOwnership::observe(const Hierarchy& h) {
+bool LevelOwnership::observe(const Hierarchy& h) {
+  bool changed = covered_.empty();
   covered_.resize(levels_);
   for (int m = 0; m < levels_; ++m) {
     const TetMesh& mesh = *h.level(m).mesh;
@@ -84,9 +85,11 @@ void LevelOwnership::observe(const Hierarchy& h) {
     for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
       bool covered = true;
       for (int v : mesh.tets[t]) covered = covered && h.state(m, v) != NodeState::Inactive;
+      changed = changed || covered_[m][t] != covered;
       covered_[m][t] = covered;
     }
   }
+  return changed;
 }
 
 // A finer level claims x only inside its own mesh, where its tet has no inactive vertex;

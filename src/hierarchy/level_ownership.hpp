@@ -23,7 +23,10 @@ class LevelOwnership {
 
   /// Takes the hierarchy's current statuses: which tets of each level have no inactive vertex.
   /// O(tets of all levels); call it before shares() whenever the statuses may have changed.
-  void observe(const Hierarchy& h);
+  /// Returns whether any tet's coverage changed since the last call (true on the first): the
+  /// shares of every level are the same as last time when it did not, so a frame without a
+  /// topology change need not ask for them again.
+  bool observe(const Hierarchy& h);
 
   /// For every tet of `level` in the statuses last observed: share[t], the fraction of it
   /// `level` simulates (0–1), and owner[t], the level that simulates most of it (the coarser one

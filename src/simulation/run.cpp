@@ -268,7 +268,8 @@ class FrameWriter {
   void write_vtk(int frame, double time) {
     sim_.fill_inactive();  // every level shows the whole deformed object
     if (!ownership_) ownership_ = std::make_unique<LevelOwnership>(sim_.hierarchy());
-    ownership_->observe(sim_.hierarchy());
+    // The shares follow the statuses only: recounted after a topology change, else kept.
+    const bool coverage_changed = ownership_->observe(sim_.hierarchy());
     std::vector<LevelFrameView> views(L_);
     for (int l = 0; l < L_; ++l) {
       const PointState& s = sim_.state(l);
@@ -284,7 +285,7 @@ class FrameWriter {
       v.time_level = time_level_[l];
       v.criterion = adapt_.criterion(l);
       v.mass = sim_.model(l).mass;
-      fill_simulated(l);
+      if (coverage_changed) fill_simulated(l);
       v.simulated = simulated_[l];
       v.simulated_by = simulated_by_[l];
     }

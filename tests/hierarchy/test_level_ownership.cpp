@@ -1,0 +1,75 @@
+// Which level simulates each part of the object (hierarchy/level_ownership.hpp): the shares add
+// up to the object, follow splits and merges, and observe() says when they may have changed,
+// which the VTK frames rely on to recount them only after a topology change.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hierarchy/level_ownership.hpp"
+#include "hierarchy_fixture.hpp"
+
+using namespace mrsim;
+using namespace mrsim::testing;
+
+namespace {
+
+struct Shares {
+  std::vector<std::vector<double>> share;
+  std::vector<std::vector<std::int8_t>> owner;
+};
+
+Shares shares_of(const LevelOwnership& own, int levels) {
+  Shares s;
+  s.share.resize(levels);
+  s.owner.resize(levels);
+  for (int l = 0; l < levels; ++l) own.shares(l, s.share[l], s.owner[l]);
+  return s;
+}
+
+// Σ over levels and tets of share × volume, against the box's 0.1 × 0.06 × 0.04 m.
+double simulated_volume(const ThreeLevels& f, const Shares& s) {
+  double v = 0;
+  for (std::size_t l = 0; l < f.meshes.size(); ++l)
+    for (std::size_t t = 0; t < f.meshes[l].tets.size(); ++t) {
+      const Tet& k = f.meshes[l].tets[t];
+      const auto& x = f.meshes[l].points;
+      v += s.share[l][t] * std::abs(signed_volume(x[k[0]], x[k[1]], x[k[2]], x[k[3]]));
+    }
+  return v;
+}
+
+}  // namespace
+
+TEST(LevelOwnership, SharesCoverTheObjectFollowSplitsAndObserveSaysWhenTheyChange) {
+  const ThreeLevels f;
+  Hierarchy h = f.make();
+  LevelOwnership own(h);
+  constexpr double kBox = 0.1 * 0.06 * 0.04;
+  EXPECT_TRUE(own.observe(h));   // the first observation
+  EXPECT_FALSE(own.observe(h));  // nothing moved
+  const Shares start = shares_of(own, 3);
+  for (double s : start.share[0]) EXPECT_EQ(s, 1.0);  // level 0 alone simulates everything
+  for (double s : start.share[1]) EXPECT_EQ(s, 0.0);
+  EXPECT_NEAR(simulated_volume(f, start), kBox, 1e-12);
+
+  // Split the level-0 points of the box's left half: level 1 takes a share there.
+  for (int p = 0; p < h.num_points(0); ++p)
+    if (f.meshes[0].points[p].x() < 0.05 && h.can_split(0, p)) h.split(0, p);
+  EXPECT_TRUE(own.observe(h));
+  EXPECT_FALSE(own.observe(h));
+  const Shares split = shares_of(own, 3);
+  double level1 = 0;
+  for (double s : split.share[1]) level1 += s;
+  EXPECT_GT(level1, 1.0);
+  // The shares are sampled, so the object's volume only to the sampling.
+  EXPECT_NEAR(simulated_volume(f, split), kBox, 0.03 * kBox);
+
+  // Merged back: the coverage changes again, and the shares are the start's.
+  for (int p = 0; p < h.num_points(0); ++p)
+    if (h.can_merge(0, p)) h.merge(0, p);
+  h.collect_garbage();
+  EXPECT_TRUE(own.observe(h));
+  const Shares back = shares_of(own, 3);
+  EXPECT_EQ(back.share, start.share);
+  EXPECT_EQ(back.owner, start.owner);
+}
