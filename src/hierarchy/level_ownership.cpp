@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "hierarchy/tet_locator.hpp"
+#include "mesh/tet_neighbours.hpp"
 
 namespace mrsim {
 
@@ -34,6 +35,17 @@ std::array<double, 4> uniform_bary(std::uint64_t key) {
   return w;
 }
 
+// Interleaved bits of three coordinates in [0, 1] at 10 bits each (w[1..3] of a point's
+// barycentric coordinates): nearby points get nearby keys.
+std::uint32_t z_order(const std::array<double, 4>& w) {
+  std::uint32_t key = 0;
+  for (int a = 0; a < 3; ++a) {
+    const auto q = static_cast<std::uint32_t>(std::clamp(w[a + 1], 0.0, 1.0) * 1023.0);
+    for (int bit = 0; bit < 10; ++bit) key |= ((q >> bit) & 1u) << (3 * bit + a);
+  }
+  return key;
+}
+
 double mean_tet_volume(const TetMesh& m) {
   double v = 0;
   for (const Tet& t : m.tets) v += tet_volume(m, t);
@@ -45,7 +57,11 @@ double mean_tet_volume(const TetMesh& m) {
 LevelOwnership::LevelOwnership(const Hierarchy& h)
     : levels_(h.num_levels()), start_(levels_), where_(levels_) {
   std::vector<TetLocator> locators;
-  for (int m = 0; m < levels_; ++m) locators.emplace_back(*h.level(m).mesh);
+  std::vector<std::vector<std::array<int, 4>>> neighbours;
+  for (int m = 0; m < levels_; ++m) {
+    locators.emplace_back(*h.level(m).mesh);
+    neighbours.push_back(tet_neighbours(*h.level(m).mesh));
+  }
   const double unit = mean_tet_volume(*h.level(levels_ - 1).mesh);
   for (int l = 0; l < levels_; ++l) {
     const TetMesh& mesh = *h.level(l).mesh;
@@ -55,14 +71,24 @@ LevelOwnership::LevelOwnership(const Hierarchy& h)
       start_[l][t + 1] = start_[l][t] + static_cast<std::int32_t>(std::clamp(n, 1.0, 4096.0));
     }
     where_[l].resize(static_cast<std::size_t>(start_[l].back()) * levels_);
-    // Consecutive samples lie in one tet of l: each level's last answer is tried first.
+    // Each level's search walks from its last answer, through the samples of a tet of l in
+    // Z order (of their barycentric coordinates): a coarse tet's samples, drawn at random,
+    // would be a few fine tets apart; in that order they are neighbours.
     std::vector<int> last(levels_, -1);
-    for (std::size_t t = 0; t < mesh.tets.size(); ++t)
-      for (std::int32_t s = start_[l][t]; s < start_[l][t + 1]; ++s) {
-        const auto w = uniform_bary((static_cast<std::uint64_t>(l) << 40) + s);
-        Vec3 x = Vec3::Zero();
-        for (int a = 0; a < 4; ++a) x += w[a] * mesh.points[mesh.tets[t][a]];
-        std::int32_t* at = &where_[l][static_cast<std::size_t>(s) * levels_];
+    std::vector<Vec3> x;
+    std::vector<std::pair<std::uint32_t, std::int32_t>> order;  // (Z-order key, sample)
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      const std::int32_t first = start_[l][t], count = start_[l][t + 1] - first;
+      x.assign(count, Vec3::Zero());
+      order.resize(count);
+      for (std::int32_t i = 0; i < count; ++i) {
+        const auto w = uniform_bary((static_cast<std::uint64_t>(l) << 40) + first + i);
+        for (int a = 0; a < 4; ++a) x[i] += w[a] * mesh.points[mesh.tets[t][a]];
+        order[i] = {z_order(w), i};
+      }
+      std::sort(order.begin(), order.end());
+      for (const auto& [key, i] : order) {
+        std::int32_t* at = &where_[l][static_cast<std::size_t>(first + i) * levels_];
         for (int m = 0; m < levels_; ++m) {
           if (m == l) {
             at[m] = static_cast<std::int32_t>(t);
@@ -70,9 +96,11 @@ LevelOwnership::LevelOwnership(const Hierarchy& h)
           }
           // -1 outside level m's mesh: independent meshes of one object do not share their
           // boundary, and a level claims only what its tets cover.
-          at[m] = last[m] = locators[m].containing(x, last[m]);
+          at[m] = locators[m].containing(x[i], last[m], &neighbours[m]);
+          if (at[m] >= 0) last[m] = at[m];
         }
       }
+    }
   }
 }
 

@@ -159,13 +159,28 @@ int TetLocator::containing(const Vec3& p) const {
   return best;
 }
 
-int TetLocator::containing(const Vec3& p, int hint) const {
+int TetLocator::containing(const Vec3& p, int hint,
+                           const std::vector<std::array<int, 4>>* neighbours) const {
   // Another tet wins only with a larger smallest coordinate, i.e. holding p by more than this
   // margin too: the two would overlap. 1e-4 leaves room for the coordinates' rounding.
   constexpr double kClearlyInside = 1e-4;
-  if (hint >= 0 && hint < static_cast<int>(inverse_.size())) {
+  // A walk that meets a face shared by no tet, or circles, ends in the cell's search.
+  const int steps = neighbours ? 64 : 1;
+  for (int step = 0; step < steps && hint >= 0 && hint < static_cast<int>(inverse_.size());
+       ++step) {
     const auto b = barycentric(hint, p);
-    if (*std::min_element(b.begin(), b.end()) >= kClearlyInside) return hint;
+    const auto beyond = std::min_element(b.begin(), b.end());
+    if (*beyond >= kClearlyInside) return hint;
+    if (!neighbours) break;
+    if (step == 0 && *beyond < -1) {
+      // Farther beyond the hint than its own size: the walk starts again from a tet listed in
+      // p's grid cell, which is nearer.
+      const auto c = cell_of(p);
+      const int cell = cell_index(c[0], c[1], c[2]);
+      hint = cell_start_[cell] < cell_start_[cell + 1] ? cell_tets_[cell_start_[cell]] : -1;
+      continue;
+    }
+    hint = (*neighbours)[hint][beyond - b.begin()];
   }
   return containing(p);
 }

@@ -28,7 +28,10 @@ class TetLocator {
   /// The same answer, trying `hint` first (a tet near p, or -1): when p is inside it by a clear
   /// margin no other tet of a mesh whose tets do not overlap can hold p better, so the cell's
   /// other tets are not tested. For runs of nearby queries (the level ownership's samples).
-  int containing(const Vec3& p, int hint) const;
+  /// With the mesh's face neighbours (mesh/tet_neighbours.hpp), a walk from the hint across the
+  /// face p lies farthest beyond, until a tet holds p by that margin.
+  int containing(const Vec3& p, int hint,
+                 const std::vector<std::array<int, 4>>* neighbours = nullptr) const;
   /// Barycentric coordinates of p in tet t (signed).
   std::array<double, 4> barycentric(int t, const Vec3& p) const;
   const TetMesh& mesh() const { return mesh_; }

@@ -6,6 +6,7 @@
 #include "hierarchy/closest_point.hpp"
 #include "hierarchy/tet_locator.hpp"
 #include "mesh/box_mesh.hpp"
+#include "mesh/tet_neighbours.hpp"
 
 using namespace mrsim;
 
@@ -84,6 +85,7 @@ TEST(TetLocator, OutsidePointsGetTheNearestTetWithSignedCoordinates) {
 TEST(TetLocator, ContainingIsTheBestHoldingTetAndMinusOneOutside) {
   const TetMesh m = jittered_box();
   const TetLocator loc(m);
+  const auto neighbours = tet_neighbours(m);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> d(-0.1, 1.1);
   int inside = 0, outside = 0, previous = -1;
@@ -96,10 +98,13 @@ TEST(TetLocator, ContainingIsTheBestHoldingTetAndMinusOneOutside) {
       if (low >= -1e-12 && (best < 0 || low > best_min)) best = t, best_min = low;
     }
     EXPECT_EQ(loc.containing(p), best) << p.transpose();
-    // A hint changes the work, never the answer: the right tet, a neighbour's, any, none.
+    // A hint changes the work, never the answer: the right tet, a neighbour's, any, none;
+    // nor does a walk from it across the faces (far hints walk from p's grid cell).
     const int any = static_cast<int>(rng() % m.tets.size());
-    for (const int hint : {best, previous, any, -1})
+    for (const int hint : {best, previous, any, -1}) {
       EXPECT_EQ(loc.containing(p, hint), best) << p.transpose() << ", hint " << hint;
+      EXPECT_EQ(loc.containing(p, hint, &neighbours), best) << p.transpose() << ", walk " << hint;
+    }
     previous = best;
     EXPECT_EQ(loc.locate(p).inside(), best >= 0) << p.transpose();
     if (best >= 0) {
