@@ -5,21 +5,19 @@
 //   build/bench/bench_hierarchy_setup
 #include <benchmark/benchmark.h>
 
-#include <string>
-
+#include "bundled_liver.hpp"
 #include "contact/skin.hpp"
 #include "contact/skin_binding.hpp"
 #include "core/huge_page_heap.hpp"
 #include "hierarchy/level_links.hpp"
 #include "mesh/boundary_faces.hpp"
-#include "mesh/mesh_reader.hpp"
 
 using namespace mrsim;
 
 namespace {
 
 struct Liver {
-  std::vector<TetMesh> meshes;
+  const std::vector<TetMesh>& meshes = bench::bundled_liver_levels();
   std::vector<PointAdjacency> adj;
   std::vector<HierarchyLevel> levels;
 };
@@ -27,10 +25,6 @@ struct Liver {
 const Liver& liver() {
   static const Liver l = [] {
     Liver v;
-    for (int k = 0; k < 4; ++k)
-      v.meshes.push_back(read_tet_mesh(std::string(MRSIM_SOURCE_DIR) +
-                                           "/scenarios/meshes/liver_L" + std::to_string(k) + ".vtu",
-                                       LengthUnit::Metre));
     for (const TetMesh& m : v.meshes)
       v.adj.push_back(build_point_adjacency(static_cast<int>(m.points.size()), m.tets));
     for (std::size_t k = 0; k < v.meshes.size(); ++k) v.levels.push_back({&v.meshes[k], &v.adj[k]});

@@ -5,9 +5,7 @@
 //   build/bench/bench_level_setup
 #include <benchmark/benchmark.h>
 
-#include <string>
-
-#include "mesh/mesh_reader.hpp"
+#include "bundled_liver.hpp"
 #include "physics/level_model.hpp"
 #include "physics/spectral_bound.hpp"
 
@@ -25,15 +23,7 @@ MaterialLaw liver_probe_law() {
   return law;
 }
 
-const TetMesh& liver(int level) {
-  static std::vector<TetMesh> meshes;
-  if (meshes.empty())
-    for (int l = 0; l < 4; ++l)
-      meshes.push_back(read_tet_mesh(std::string(MRSIM_SOURCE_DIR) + "/scenarios/meshes/liver_L" +
-                                         std::to_string(l) + ".vtu",
-                                     LengthUnit::Metre));
-  return meshes[level];
-}
+const TetMesh& liver(int level) { return bench::bundled_liver_levels()[level]; }
 
 void level_model(benchmark::State& state) {
   const TetMesh& mesh = liver(static_cast<int>(state.range(0)));

@@ -165,9 +165,7 @@ int TetLocator::containing(const Vec3& p, int hint,
   // margin too: the two would overlap. 1e-4 leaves room for the coordinates' rounding.
   constexpr double kClearlyInside = 1e-4;
   // A walk that meets a face shared by no tet, or circles, ends in the cell's search.
-  const int steps = neighbours ? 64 : 1;
-  for (int step = 0; step < steps && hint >= 0 && hint < static_cast<int>(inverse_.size());
-       ++step) {
+  for (int step = 0; step < 64 && hint >= 0 && hint < static_cast<int>(inverse_.size()); ++step) {
     const auto b = barycentric(hint, p);
     const auto beyond = std::min_element(b.begin(), b.end());
     if (*beyond >= kClearlyInside) return hint;
