@@ -67,11 +67,17 @@ void bench_forces(benchmark::State& state, StrainMeasure strain, bool damped) {
 }
 
 // The Green–Lagrange per-tet pass alone (no gather), one thread, for each build of the kernel:
-// what the AVX2 build chosen at run time gains over baseline x86-64 (same bits).
-void bench_green_pass(benchmark::State& state, bool avx2, bool damped) {
+// what the AVX2 and AVX-512 builds chosen at run time gain over baseline x86-64 (same bits).
+enum class Build { Baseline, Avx2, Avx512 };
+
+void bench_green_pass(benchmark::State& state, Build build, bool damped) {
 #if defined(__x86_64__)
-  if (avx2 && !__builtin_cpu_supports("avx2")) {
+  if (build == Build::Avx2 && !__builtin_cpu_supports("avx2")) {
     state.SkipWithError("no AVX2 on this processor");
+    return;
+  }
+  if (build == Build::Avx512 && !has_avx512_kernel()) {
+    state.SkipWithError("no AVX-512 (F, VL, DQ) on this processor");
     return;
   }
 #endif
@@ -84,7 +90,9 @@ void bench_green_pass(benchmark::State& state, bool avx2, bool damped) {
   for (int t = 0; t < model.num_tets(); ++t) tets[t] = t;
   std::vector<double> out(12 * tets.size());
   const GreenKernelData data = green_kernel_data(model);
-  const auto kernel = avx2 ? &green_nodal_forces_avx2 : &green_nodal_forces_baseline;
+  const auto kernel = build == Build::Avx512 ? &green_nodal_forces_avx512
+                      : build == Build::Avx2 ? &green_nodal_forces_avx2
+                                             : &green_nodal_forces_baseline;
   for (auto _ : state) {
     kernel(data, tets.data(), static_cast<int>(tets.size()),
            reinterpret_cast<const double(*)[3]>(u.data()),
@@ -152,11 +160,15 @@ BENCHMARK_CAPTURE(bench_forces, green, StrainMeasure::GreenLagrange, false)->App
 BENCHMARK_CAPTURE(bench_forces, green_damped, StrainMeasure::GreenLagrange, true)
     ->Apply(threads_arg);
 
-BENCHMARK_CAPTURE(bench_green_pass, baseline, false, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(bench_green_pass, baseline_damped, false, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(bench_green_pass, baseline, Build::Baseline, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(bench_green_pass, baseline_damped, Build::Baseline, true)
+    ->Unit(benchmark::kMillisecond);
 #if defined(__x86_64__)
-BENCHMARK_CAPTURE(bench_green_pass, avx2, true, false)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(bench_green_pass, avx2_damped, true, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(bench_green_pass, avx2, Build::Avx2, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(bench_green_pass, avx2_damped, Build::Avx2, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(bench_green_pass, avx512, Build::Avx512, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(bench_green_pass, avx512_damped, Build::Avx512, true)
+    ->Unit(benchmark::kMillisecond);
 #endif
 
 BENCHMARK_CAPTURE(bench_live_subset, strided, false)->Unit(benchmark::kMicrosecond);

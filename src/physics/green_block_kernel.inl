@@ -117,9 +117,10 @@ struct ScatterSink {
   }
 };
 
-template <int B, bool Damped, class Sink>
-void block(const GreenKernelData& m, const int* tets, const double (*u)[3], const double (*v)[3],
-           const Sink& sink) {
+// The nodal forces f[a][i][b] = -V (F S) ∇N_a of the block's B tets.
+template <int B, bool Damped>
+void block_forces(const GreenKernelData& m, const int* tets, const double (*u)[3],
+                  const double (*v)[3], double (&f)[4][3][B]) {
   const double lambda = m.lambda, phi = m.phi;
   const double* two_mu = m.two_mu;  // per strain component (a calibrated level's scales)
   const double* two_psi = m.two_psi;
@@ -177,13 +178,39 @@ void block(const GreenKernelData& m, const int* tets, const double (*u)[3], cons
     const double scale = -m.volume[tets[b]];
     for (int k = 0; k < 9; ++k) P[k][b] *= scale;
   }
-  double f[4][3][B];
   for (int a = 0; a < 4; ++a)
     for (int i = 0; i < 3; ++i)
       for (int b = 0; b < B; ++b)
         f[a][i][b] = by_row(i, P[MRSIM_IX(i, 0)][b] * g[a][0][b], P[MRSIM_IX(i, 1)][b] * g[a][1][b],
                             P[MRSIM_IX(i, 2)][b] * g[a][2][b]);
+}
+
+template <int B, bool Damped, class Sink>
+void block(const GreenKernelData& m, const int* tets, const double (*u)[3], const double (*v)[3],
+           const Sink& sink) {
+  double f[4][3][B];
+  block_forces<B, Damped>(m, tets, u, v, f);
   sink.template put<B>(m, tets, f);
+}
+
+// The last 1-3 tets of a list: one block of four whose missing tets repeat the last one, each
+// real tet's forces handed to the sink alone. Each tet's arithmetic does not depend on its block
+// (the same bits). There is no single-tet block: GCC 12 compiles block_forces<1> for AVX-512
+// (-O3, with both its loop and SLP vectorizers) into wrong forces on two components of one
+// vertex (GreenNodalForces.BitIdenticalToGreenPiola caught it).
+template <bool Damped, class Sink>
+void tail(const GreenKernelData& m, const int* tets, int count, const double (*u)[3],
+          const double (*v)[3], const Sink& sink) {
+  int padded[4];
+  for (int b = 0; b < 4; ++b) padded[b] = tets[b < count ? b : count - 1];
+  double f[4][3][4];
+  block_forces<4, Damped>(m, padded, u, v, f);
+  for (int b = 0; b < count; ++b) {
+    double one[4][3][1];
+    for (int a = 0; a < 4; ++a)
+      for (int i = 0; i < 3; ++i) one[a][i][0] = f[a][i][b];
+    sink.template put<1>(m, tets + b, one);
+  }
 }
 
 #undef MRSIM_IX
@@ -196,10 +223,10 @@ void all_blocks(const GreenKernelData& m, const int* tets, int count, const doub
   for (; k + kBlock <= count; k += kBlock) block<kBlock, Damped>(m, tets + k, u, v, sink);
   if constexpr (kBlock > 8)
     for (; k + 8 <= count; k += 8) block<8, Damped>(m, tets + k, u, v, sink);
-  // The tail in fours, then singles: each level's live tets end in up to 15 (the single-tet
-  // blocks were 1.7 % of the adaptive liver_probe's instructions).
+  // The tail in fours, then the last 1-3 in one padded block of four: each level's live tets
+  // end in up to 15 (single-tet blocks were 1.7 % of the adaptive liver_probe's instructions).
   for (; k + 4 <= count; k += 4) block<4, Damped>(m, tets + k, u, v, sink);
-  for (; k < count; ++k) block<1, Damped>(m, tets + k, u, v, sink);
+  if (k < count) tail<Damped>(m, tets + k, count - k, u, v, sink);
 }
 
 // The whole pass, damped (φ or ψ non-zero, MaterialLaw::damped()) or not: what each build exports.

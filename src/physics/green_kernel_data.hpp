@@ -1,7 +1,7 @@
 #pragma once
 // What the Green–Lagrange block kernel reads, as plain arrays (physics/green_block_kernel.inl):
-// the same kernel is compiled for baseline x86-64 and for AVX2, and the two builds share no
-// inline code (see there).
+// the same kernel is compiled for baseline x86-64, for AVX2 and for AVX-512, and the builds share
+// no inline code (see there).
 
 namespace mrsim {
 
@@ -39,5 +39,17 @@ void green_scatter_forces_baseline(const GreenKernelData& d, const int* tets, in
 void green_scatter_forces_avx2(const GreenKernelData& d, const int* tets, int count,
                                const double (*u)[3], const double (*v)[3],
                                const GreenScatterTarget& target);
+/// The same kernel compiled for AVX-512 F/VL/DQ (x86-64 builds only; the caller checks the
+/// processor: has_avx512_kernel()).
+void green_nodal_forces_avx512(const GreenKernelData& d, const int* tets, int count,
+                               const double (*u)[3], const double (*v)[3], double (*out)[4][3]);
+void green_scatter_forces_avx512(const GreenKernelData& d, const int* tets, int count,
+                                 const double (*u)[3], const double (*v)[3],
+                                 const GreenScatterTarget& target);
+
+/// Whether this processor (and its operating system) runs the AVX-512 build: F, VL and DQ. Defined
+/// out of line in the baseline build (green_nodal_forces.cpp): an inline function here would be
+/// compiled into the AVX-512 file too, and the linker could keep that copy.
+bool has_avx512_kernel();
 
 }  // namespace mrsim

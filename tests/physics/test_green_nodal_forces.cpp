@@ -1,7 +1,7 @@
 // The blocked Green–Lagrange tet pass (physics/green_nodal_forces) against the per-tet
 // green_piola() it replaces in the force kernel: bit for bit, for every tet of lists of any
 // length and order (full blocks of eight and remainders), damped and undamped, at small and
-// large deformation, for the baseline and the AVX2 builds of the kernel; and its scattering form
+// large deformation, for the baseline, AVX2 and AVX-512 builds of the kernel; and its scattering form
 // (one thread) against the per-point gather of those per-tet forces. Bit-identity is what keeps
 // every golden file and the thread-count independence of the results.
 #include <gtest/gtest.h>
@@ -33,12 +33,14 @@ using Kernel = void (*)(const GreenKernelData&, const int*, int, const double (*
                        const double (*)[3], double (*)[4][3]);
 
 // The kernel behind green_nodal_forces(), then each build of it called directly: the baseline
-// one and, where the processor has AVX2, the AVX2 one (the dispatcher picks that one here).
+// one and, where the processor has them, the AVX2 and AVX-512 ones (the dispatcher picks the
+// widest).
 std::vector<std::pair<const char*, Kernel>> kernels() {
   std::vector<std::pair<const char*, Kernel>> k{{"dispatched", nullptr},
                                                 {"baseline", &green_nodal_forces_baseline}};
 #if defined(__x86_64__)
   if (__builtin_cpu_supports("avx2")) k.emplace_back("avx2", &green_nodal_forces_avx2);
+  if (has_avx512_kernel()) k.emplace_back("avx512", &green_nodal_forces_avx512);
 #endif
   return k;
 }
@@ -65,14 +67,19 @@ TEST(GreenNodalForces, BitIdenticalToGreenPiola) {
         u[i] = Vec3(d(rng), d(rng), d(rng));
         v[i] = 10 * Vec3(d(rng), d(rng), d(rng));
       }
-      // Every tet, then a shuffled list of odd length (blocks start anywhere).
+      // Every tet, then a shuffled list of odd length (blocks start anywhere), then short ones
+      // ending in every kind of tail (the last 1-3 tets go through a padded block of four).
       std::vector<int> all(m.num_tets());
       for (int t = 0; t < m.num_tets(); ++t) all[t] = t;
       std::vector<int> some = all;
       std::shuffle(some.begin(), some.end(), rng);
       some.resize(some.size() / 3 * 2 + 1);
+      std::vector<std::vector<int>> lists{all, some};
+      for (const int n : {1, 2, 3, 7, 14, 31})
+        lists.emplace_back(some.begin() + n, some.begin() + 2 * n);
       for (const auto& [name, kernel] : kernels())
-        for (const std::vector<int>* list : {&all, &some}) {
+        for (const std::vector<int>* list = lists.data(); list != lists.data() + lists.size();
+             ++list) {
           std::vector<TetGradients> out(m.num_tets());
           const int n = static_cast<int>(list->size());
           if (kernel == nullptr)
@@ -100,6 +107,7 @@ std::vector<std::pair<const char*, Scatter>> scatters() {
                                                  {"baseline", &green_scatter_forces_baseline}};
 #if defined(__x86_64__)
   if (__builtin_cpu_supports("avx2")) k.emplace_back("avx2", &green_scatter_forces_avx2);
+  if (has_avx512_kernel()) k.emplace_back("avx512", &green_scatter_forces_avx512);
 #endif
   return k;
 }
