@@ -4,8 +4,8 @@
 // into SIMD arithmetic across tets (issue 17 point 4). Every tet's arithmetic is the one of
 // green_piola() in stress.hpp, operation for operation and in the same order, so the forces
 // are bit-identical to it (GreenNodalForces.BitIdenticalToGreenPiola), whatever the block a
-// tet falls in and whatever the thread count. On x86-64 the AVX2 build of the same kernel runs
-// where the processor has it, with the same bits (green_block_kernel.inl).
+// tet falls in and whatever the thread count. On x86-64 the AVX-512 or AVX2 build of the same
+// kernel runs where the processor has it, with the same bits (green_block_kernel.inl).
 #include "physics/green_kernel_data.hpp"
 #include "physics/level_model.hpp"
 #include "physics/packed_tets.hpp"
@@ -35,7 +35,7 @@ void green_scatter_packed(const LevelModel& m, PackedTets& packed, const Vec3* u
                           const double* weight, const unsigned char* mask, Vec3* f);
 
 /// The level's arrays as the kernel builds read them (green_kernel_data.hpp): the same
-/// pass through green_nodal_forces_baseline() or green_nodal_forces_avx2() directly.
+/// pass through green_nodal_forces_baseline(), _avx2() or _avx512() directly.
 GreenKernelData green_kernel_data(const LevelModel& m);
 
 }  // namespace mrsim
