@@ -16,6 +16,7 @@
 #include "core/interruption.hpp"
 #include "core/log.hpp"
 #include "mrsim/version.hpp"
+#include "physics/green_nodal_forces.hpp"
 #include "simulation/run.hpp"
 
 namespace mrsim {
@@ -106,7 +107,10 @@ int command_check(const CommonArgs& a) {
 int run_cli(int argc, char** argv) {
   if (argc >= 2 && std::string_view(argv[1]) == "mesh") return hand_over_to_mesher(argc, argv, 2);
   CLI::App app{"mrsim: hierarchical multiresolution soft-body simulator (Debunne's model)"};
-  app.set_version_flag("--version", std::string("mrsim ") + kVersion + " (" + kGitRevision + ")");
+  app.set_version_flag("--version", std::string("mrsim ") + kVersion + " (" + kGitRevision + ")\n" +
+                                        "Green-Lagrange force kernel: " + green_kernel_name() +
+                                        " (the widest this processor runs; every build gives "
+                                        "the same results)");
   app.require_subcommand(1);
   CommonArgs run_args, check_args;
   CLI::App* run = app.add_subcommand("run", "Run a scenario and write its outputs");

@@ -24,7 +24,8 @@ const char* const kFooter =
     "counters,\n"
     "active/ghost counts, status, events, connectivity) are compared exactly whatever the\n"
     "tolerances. Ignored: log.h5 /frames/wall_time and the root attributes start_time,\n"
-    "mrsim_version, git_revision; summary.json wall_time, mrsim_version, git_revision.\n"
+    "mrsim_version, git_revision; summary.json wall_time, mrsim_version, git_revision,\n"
+    "force_kernel.\n"
     "Exit codes: 0 equal, 1 different (report on stdout), 2 unreadable input.";
 
 // Both tolerances: finite and >= 0 (CLI::NonNegativeNumber lets "nan" through).

@@ -3,7 +3,9 @@
 namespace mrsim {
 
 bool is_ignored_summary_key(const std::string& key) {
-  return key.find("wall") != std::string::npos || key == "mrsim_version" || key == "git_revision";
+  // What describes the machine and the build, not the run's results.
+  return key.find("wall") != std::string::npos || key == "mrsim_version" ||
+         key == "git_revision" || key == "force_kernel";
 }
 
 JsonDiff diff_summaries(const nlohmann::json& a, const nlohmann::json& b,

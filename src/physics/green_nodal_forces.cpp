@@ -66,6 +66,14 @@ KernelBuild kernel_build() {
 
 }  // namespace
 
+const char* green_kernel_name() {
+  switch (kernel_build()) {
+    case KernelBuild::Avx512: return "avx512";
+    case KernelBuild::Avx2: return "avx2";
+    default: return "baseline";
+  }
+}
+
 void green_nodal_forces(const LevelModel& m, const int* tets, int count, const Vec3* u,
                         const Vec3* v, TetGradients* out) {
   const GreenKernelData d = green_kernel_data(m);

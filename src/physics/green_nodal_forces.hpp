@@ -34,6 +34,11 @@ void green_scatter_forces(const LevelModel& m, const int* tets, int count, const
 void green_scatter_packed(const LevelModel& m, PackedTets& packed, const Vec3* u, const Vec3* v,
                           const double* weight, const unsigned char* mask, Vec3* f);
 
+/// The build of the kernel this processor runs, the widest it has: "avx512", "avx2" or
+/// "baseline" (every build gives the same bits). summary.json and `mrsim --version` say it,
+/// since it sets the speed.
+const char* green_kernel_name();
+
 /// The level's arrays as the kernel builds read them (green_kernel_data.hpp): the same
 /// pass through green_nodal_forces_baseline(), _avx2() or _avx512() directly.
 GreenKernelData green_kernel_data(const LevelModel& m);

@@ -22,6 +22,7 @@
 #include "io/vtk_series_writer.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mrsim/version.hpp"
+#include "physics/green_nodal_forces.hpp"
 #include "contact/tool_surface.hpp"
 #include "simulation/checkpoint_state.hpp"
 #include "simulation/contact_setup.hpp"
@@ -446,6 +447,7 @@ nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& si
   j["message"] = st.message;
   j["mrsim_version"] = kVersion;
   j["git_revision"] = kGitRevision;
+  j["force_kernel"] = green_kernel_name();
   j["frames"] = st.frames_done;
   j["simulated_time"] = st.frames_done * sc.time.frame_dt;
   j["steps"] = sum.steps;

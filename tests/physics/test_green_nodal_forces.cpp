@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstring>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "mesh/box_mesh.hpp"
@@ -97,6 +98,18 @@ TEST(GreenNodalForces, BitIdenticalToGreenPiola) {
           }
         }
     }
+}
+
+// The name summary.json and --version give is the build the dispatcher runs: the widest one.
+TEST(GreenKernelName, IsTheWidestBuildThisProcessorRuns) {
+  std::string expected = "baseline";
+#if defined(__x86_64__)
+  if (has_avx512_kernel())
+    expected = "avx512";
+  else if (__builtin_cpu_supports("avx2"))
+    expected = "avx2";
+#endif
+  EXPECT_EQ(green_kernel_name(), expected);
 }
 
 using Scatter = void (*)(const GreenKernelData&, const int*, int, const double (*)[3],

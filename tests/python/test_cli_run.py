@@ -48,10 +48,16 @@ def test_revision_is_the_built_one(binary, source):
     if head.returncode != 0:
         print("skipped (not a git checkout): the revision check")
         return
-    words = run(binary, "--version").stdout.split()
+    lines = run(binary, "--version").stdout.splitlines()
+    words = lines[0].split() if lines else []
     revision = words[-1].strip("()").removesuffix("-dirty") if words else ""
     check(len(revision) >= 7 and head.stdout.strip().startswith(revision),
           "--version names the checkout's revision %s: %s" % (head.stdout.strip()[:7], words))
+    # Its second line names the force kernel's build this processor runs (the speed differs,
+    # the results do not); summary.json says the same.
+    kernel = lines[1].split(":")[1].split()[0] if len(lines) > 1 and ":" in lines[1] else ""
+    check(kernel in ("avx512", "avx2", "baseline"),
+          "--version names the force kernel's build: %s" % lines)
 
 
 def test_exit_codes(binary, scenario):

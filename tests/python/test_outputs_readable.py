@@ -214,6 +214,8 @@ def main():
             summary = json.load(f)
             checks.expect(isinstance(summary, dict), "summary.json is not a JSON object")
             check_summary_shares(checks, summary)
+            checks.expect(summary.get("force_kernel") in ("avx512", "avx2", "baseline"),
+                          f"summary.json force_kernel: {summary.get('force_kernel')}")
 
     print(f"{checks.passed} passed, {len(checks.failures)} failed")
     return 1 if checks.failures else 0
