@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <iostream>
 #include <new>
 
@@ -102,15 +103,32 @@ int command_check(const CommonArgs& a) {
   return kExitOk;
 }
 
+// MRSIM_KERNEL picks the force kernel's build (physics/green_nodal_forces.hpp); a build this
+// processor does not run is an input error, said before anything else runs.
+bool apply_kernel_choice() {
+  const char* name = std::getenv("MRSIM_KERNEL");
+  if (name == nullptr || *name == '\0') return true;
+  try {
+    choose_green_kernel(name);
+    return true;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "mrsim: MRSIM_KERNEL: " << e.what() << "\n";
+    return false;
+  }
+}
+
 }  // namespace
 
 int run_cli(int argc, char** argv) {
   if (argc >= 2 && std::string_view(argv[1]) == "mesh") return hand_over_to_mesher(argc, argv, 2);
+  if (!apply_kernel_choice()) return kExitBadInput;
   CLI::App app{"mrsim: hierarchical multiresolution soft-body simulator (Debunne's model)"};
+  std::string builds;
+  for (const std::string& b : green_kernel_builds()) builds += (builds.empty() ? "" : ", ") + b;
   app.set_version_flag("--version", std::string("mrsim ") + kVersion + " (" + kGitRevision + ")\n" +
                                         "Green-Lagrange force kernel: " + green_kernel_name() +
-                                        " (the widest this processor runs; every build gives "
-                                        "the same results)");
+                                        " (this processor runs " + builds +
+                                        "; MRSIM_KERNEL picks one; all give the same results)");
   app.require_subcommand(1);
   CommonArgs run_args, check_args;
   CLI::App* run = app.add_subcommand("run", "Run a scenario and write its outputs");

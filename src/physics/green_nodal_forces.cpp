@@ -1,5 +1,8 @@
 #include "physics/green_nodal_forces.hpp"
 
+#include <atomic>
+#include <stdexcept>
+
 #include "physics/green_kernel_data.hpp"
 
 namespace mrsim {
@@ -46,32 +49,65 @@ bool has_avx512_kernel() {
 
 namespace {
 
-// The build of the kernel this processor runs, chosen once: the widest one it has, all with the
-// same bits (GreenNodalForces.BitIdenticalToGreenPiola runs each build). AVX-512 gave 41-43 M
-// tet-updates/s against AVX2's 33 on a Sapphire Rapids Xeon (bench_internal_force green/1).
+// The builds of the kernel, all with the same bits (GreenNodalForces.BitIdenticalToGreenPiola
+// runs each). AVX-512 gave 41-43 M tet-updates/s against AVX2's 33 on a Sapphire Rapids Xeon
+// (bench_internal_force green/1).
 enum class KernelBuild { Baseline, Avx2, Avx512 };
 
-KernelBuild kernel_build() {
-  static const KernelBuild build = [] {
+constexpr const char* kBuildNames[] = {"baseline", "avx2", "avx512"};
+
+bool runs(KernelBuild b) {
+  switch (b) {
 #if defined(MRSIM_AVX512_KERNEL)
-    if (has_avx512_kernel()) return KernelBuild::Avx512;
+    case KernelBuild::Avx512: return has_avx512_kernel();
 #endif
 #if defined(MRSIM_AVX2_KERNEL)
-    if (__builtin_cpu_supports("avx2")) return KernelBuild::Avx2;
+    case KernelBuild::Avx2: return __builtin_cpu_supports("avx2");
 #endif
+    case KernelBuild::Baseline: return true;
+    default: return false;
+  }
+}
+
+// The widest build the processor runs, found once (thread-safe: a static's initialisation).
+KernelBuild widest_build() {
+  static const KernelBuild build = [] {
+    for (const KernelBuild b : {KernelBuild::Avx512, KernelBuild::Avx2})
+      if (runs(b)) return b;
     return KernelBuild::Baseline;
   }();
   return build;
 }
 
+// choose_green_kernel()'s build, or -1 for the widest.
+std::atomic<int> chosen{-1};
+
+KernelBuild kernel_build() {
+  const int c = chosen.load(std::memory_order_relaxed);
+  return c < 0 ? widest_build() : static_cast<KernelBuild>(c);
+}
+
 }  // namespace
 
-const char* green_kernel_name() {
-  switch (kernel_build()) {
-    case KernelBuild::Avx512: return "avx512";
-    case KernelBuild::Avx2: return "avx2";
-    default: return "baseline";
-  }
+const char* green_kernel_name() { return kBuildNames[static_cast<int>(kernel_build())]; }
+
+std::vector<std::string> green_kernel_builds() {
+  std::vector<std::string> names;
+  for (const KernelBuild b : {KernelBuild::Avx512, KernelBuild::Avx2, KernelBuild::Baseline})
+    if (runs(b)) names.emplace_back(kBuildNames[static_cast<int>(b)]);
+  return names;
+}
+
+void choose_green_kernel(std::string_view name) {
+  for (const KernelBuild b : {KernelBuild::Avx512, KernelBuild::Avx2, KernelBuild::Baseline})
+    if (name == kBuildNames[static_cast<int>(b)] && runs(b)) {
+      chosen.store(static_cast<int>(b), std::memory_order_relaxed);
+      return;
+    }
+  std::string runnable;
+  for (const std::string& n : green_kernel_builds()) runnable += (runnable.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("the force kernel build '" + std::string(name) +
+                              "' is not one this processor runs (" + runnable + ")");
 }
 
 void green_nodal_forces(const LevelModel& m, const int* tets, int count, const Vec3* u,

@@ -6,6 +6,10 @@
 // are bit-identical to it (GreenNodalForces.BitIdenticalToGreenPiola), whatever the block a
 // tet falls in and whatever the thread count. On x86-64 the AVX-512 or AVX2 build of the same
 // kernel runs where the processor has it, with the same bits (green_block_kernel.inl).
+#include <string>
+#include <string_view>
+#include <vector>
+
 #include "physics/green_kernel_data.hpp"
 #include "physics/level_model.hpp"
 #include "physics/packed_tets.hpp"
@@ -34,10 +38,19 @@ void green_scatter_forces(const LevelModel& m, const int* tets, int count, const
 void green_scatter_packed(const LevelModel& m, PackedTets& packed, const Vec3* u, const Vec3* v,
                           const double* weight, const unsigned char* mask, Vec3* f);
 
-/// The build of the kernel this processor runs, the widest it has: "avx512", "avx2" or
-/// "baseline" (every build gives the same bits). summary.json and `mrsim --version` say it,
-/// since it sets the speed.
+/// The build of the kernel this process runs: the widest the processor has, "avx512", "avx2"
+/// or "baseline", unless choose_green_kernel() chose another (every build gives the same bits).
+/// summary.json and `mrsim --version` say it, since it sets the speed.
 const char* green_kernel_name();
+
+/// The builds this processor runs, widest first.
+std::vector<std::string> green_kernel_builds();
+
+/// Runs the build named (one of green_kernel_builds()) from now on: `MRSIM_KERNEL`, for a
+/// processor that slows its clock under AVX-512, and to check that every build gives the same
+/// results. Call it before any force is computed (not thread-safe against a running pass).
+/// Throws std::invalid_argument naming the builds this processor runs.
+void choose_green_kernel(std::string_view name);
 
 /// The level's arrays as the kernel builds read them (green_kernel_data.hpp): the same
 /// pass through green_nodal_forces_baseline(), _avx2() or _avx512() directly.

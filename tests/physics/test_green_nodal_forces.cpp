@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstring>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -110,6 +111,22 @@ TEST(GreenKernelName, IsTheWidestBuildThisProcessorRuns) {
     expected = "avx2";
 #endif
   EXPECT_EQ(green_kernel_name(), expected);
+}
+
+// MRSIM_KERNEL's choice: each build this processor runs can be chosen and is then the one
+// named; any other name is refused, naming the builds; the widest comes first.
+TEST(GreenKernelName, ChoosesAnyBuildThisProcessorRunsAndRefusesOthers) {
+  const std::vector<std::string> builds = green_kernel_builds();
+  ASSERT_FALSE(builds.empty());
+  EXPECT_EQ(builds.front(), green_kernel_name());
+  EXPECT_EQ(builds.back(), "baseline");
+  for (const std::string& b : builds) {
+    choose_green_kernel(b);
+    EXPECT_EQ(green_kernel_name(), b);
+  }
+  EXPECT_THROW(choose_green_kernel("sse9"), std::invalid_argument);
+  EXPECT_EQ(green_kernel_name(), std::string("baseline"));  // a refused name changes nothing
+  choose_green_kernel(builds.front());
 }
 
 using Scatter = void (*)(const GreenKernelData&, const int*, int, const double (*)[3],

@@ -1,0 +1,87 @@
+#!/usr/bin/python3
+"""Every build of the Green-Lagrange force kernel this processor runs gives the same run, bit for
+bit (issue 17 point 4: faster instruction sets without changing a result): liver_probe (four
+adaptive levels, a tool, Green-Lagrange, damped) cut short, run with MRSIM_KERNEL set to each
+build `mrsim --version` lists, compared at rtol = atol = 0 with `mrsim compare` (log.h5, every
+VTU array, summary.json); summary.json names the build that ran. An unknown or unsupported
+build is an input error (exit 2) that names the builds the processor runs."""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+FAILURES = []
+PASSED = []
+
+
+def check(cond, what):
+    print(("ok   " if cond else "FAIL ") + what)
+    (PASSED if cond else FAILURES).append(what)
+    return cond
+
+
+def run(binary, *args, kernel=None, cache=None):
+    env = dict(os.environ)
+    env.pop("MRSIM_KERNEL", None)
+    if kernel is not None:
+        env["MRSIM_KERNEL"] = kernel
+    if cache is not None:
+        env["MRSIM_CACHE_DIR"] = cache
+    return subprocess.run([binary, *args], capture_output=True, text=True, env=env, timeout=600)
+
+
+def builds_listed(binary):
+    """The builds `mrsim --version` says this processor runs, and the one it runs by default."""
+    lines = run(binary, "--version").stdout.splitlines()
+    line = next((l for l in lines if l.startswith("Green-Lagrange force kernel:")), "")
+    default = line.split(":")[1].split()[0] if ":" in line else ""
+    listed = line.split("runs ")[1].split(";")[0].split(", ") if "runs " in line else []
+    return default, listed
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("--binary", required=True)
+    p.add_argument("--source", required=True)
+    p.add_argument("--shared")
+    args = p.parse_args()
+    default, listed = builds_listed(args.binary)
+    check(default in ("avx512", "avx2", "baseline") and listed and listed[0] == default
+          and listed[-1] == "baseline",
+          "--version: runs %r by default, the widest of %r" % (default, listed))
+    scenario = os.path.join(args.source, "scenarios", "liver_probe.yaml")
+    with tempfile.TemporaryDirectory() as tmp:
+        cache = os.path.join(tmp, "cache")
+        outs = {}
+        for build in listed:
+            out = os.path.join(tmp, build)
+            r = run(args.binary, "run", scenario, "-o", out, "-q", "--threads", "1",
+                    "--set", "time.duration=0.5", kernel=build, cache=cache)
+            if not check(r.returncode == 0, "MRSIM_KERNEL=%s: the run exits 0 (%s)"
+                         % (build, r.stderr.strip()[-300:])):
+                continue
+            with open(os.path.join(out, "summary.json"), encoding="utf-8") as f:
+                ran = json.load(f).get("force_kernel")
+            check(ran == build, "MRSIM_KERNEL=%s: summary.json force_kernel is %r" % (build, ran))
+            outs[build] = out
+        for build, out in outs.items():
+            if build == default:
+                continue
+            r = run(args.binary, "compare", outs[default], out, "--rtol", "0", "--atol", "0")
+            check(r.returncode == 0 and "identical" in r.stdout,
+                  "%s and %s give the same run bit for bit: %s"
+                  % (default, build, r.stdout.strip().splitlines()[-1:]))
+        r = run(args.binary, "run", scenario, "-o", os.path.join(tmp, "bad"), "-q",
+                kernel="sse9", cache=cache)
+        check(r.returncode == 2 and "MRSIM_KERNEL" in r.stderr and "baseline" in r.stderr
+              and not os.path.exists(os.path.join(tmp, "bad")),
+              "MRSIM_KERNEL=sse9: exit 2 naming the builds, nothing written (%d: %s)"
+              % (r.returncode, r.stderr.strip()))
+    print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
+    return 1 if FAILURES else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
