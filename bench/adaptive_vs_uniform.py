@@ -127,6 +127,8 @@ def main():
                     uniform.append("time.substeps=%d" % yaml.safe_load(f)["time"]["substeps"])
             runs["uniform"].append(timed_run(a.binary, a.scenario, outs["uniform"], uniform))
         figures = {k: counters(outs[k]) for k in runs}
+        with open(os.path.join(outs["adaptive"], "summary.json")) as f:
+            kernel = json.load(f).get("force_kernel", "unknown")  # it sets the speed, not the bits
         counted = {"adaptive": instructions(a.binary, a.scenario, outs["adaptive"], []),
                    "uniform": instructions(a.binary, a.scenario, outs["uniform"], uniform)} \
             if a.callgrind else None
@@ -163,8 +165,9 @@ def main():
         result["tool_force_max_difference"] = float(np.abs(na - nu).max() / nu.max())
         result["tool_samples"] = int(len(fa))
     result["cache"] = a.cache
-    print("%s, one thread, median of %d paired runs (CPU = user + sys of the process), %s cache"
-          % (result["scenario"], a.repeats, a.cache))
+    result["force_kernel"] = kernel
+    print("%s, one thread, median of %d paired runs (CPU = user + sys of the process), %s cache,"
+          " %s force kernel (MRSIM_KERNEL)" % (result["scenario"], a.repeats, a.cache, kernel))
     print("  CPU adaptive %.2f s, uniform finest %.2f s: ratio %.3f"
           % (cpu["adaptive"], cpu["uniform"], result["cpu_ratio"]))
     print("  point-force evaluations ratio %.3f, tet updates ratio %.3f (CPU / tet ratio %.2f)"
