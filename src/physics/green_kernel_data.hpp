@@ -47,7 +47,8 @@ void green_scatter_forces_avx512(const GreenKernelData& d, const int* tets, int 
                                  const double (*u)[3], const double (*v)[3],
                                  const GreenScatterTarget& target);
 
-/// Whether this processor (and its operating system) runs the AVX-512 build: F, VL and DQ. Defined
+/// Whether this build has the AVX-512 kernel (the compiler took its flags) and this processor (and
+/// its operating system) runs it: F, VL and DQ. Defined
 /// out of line in the baseline build (green_nodal_forces.cpp): an inline function here would be
 /// compiled into the AVX-512 file too, and the linker could keep that copy.
 bool has_avx512_kernel();

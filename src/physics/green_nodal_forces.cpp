@@ -39,7 +39,7 @@ GreenKernelData green_kernel_data(const LevelModel& m) {
 }
 
 bool has_avx512_kernel() {
-#if defined(__x86_64__)
+#if defined(MRSIM_AVX512_KERNEL)
   return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
          __builtin_cpu_supports("avx512dq");
 #else
