@@ -123,11 +123,9 @@ int run_cli(int argc, char** argv) {
   if (argc >= 2 && std::string_view(argv[1]) == "mesh") return hand_over_to_mesher(argc, argv, 2);
   if (!apply_kernel_choice()) return kExitBadInput;
   CLI::App app{"mrsim: hierarchical multiresolution soft-body simulator (Debunne's model)"};
-  std::string builds;
-  for (const std::string& b : green_kernel_builds()) builds += (builds.empty() ? "" : ", ") + b;
   app.set_version_flag("--version", std::string("mrsim ") + kVersion + " (" + kGitRevision + ")\n" +
                                         "Green-Lagrange force kernel: " + green_kernel_name() +
-                                        " (this processor runs " + builds +
+                                        " (this processor runs " + green_kernel_build_list() +
                                         "; MRSIM_KERNEL picks one; all give the same results)");
   app.require_subcommand(1);
   CommonArgs run_args, check_args;

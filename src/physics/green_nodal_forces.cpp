@@ -98,16 +98,21 @@ std::vector<std::string> green_kernel_builds() {
   return names;
 }
 
+std::string green_kernel_build_list() {
+  std::string list;
+  for (const std::string& n : green_kernel_builds()) list += (list.empty() ? "" : ", ") + n;
+  return list;
+}
+
 void choose_green_kernel(std::string_view name) {
   for (const KernelBuild b : {KernelBuild::Avx512, KernelBuild::Avx2, KernelBuild::Baseline})
     if (name == kBuildNames[static_cast<int>(b)] && runs(b)) {
       chosen.store(static_cast<int>(b), std::memory_order_relaxed);
       return;
     }
-  std::string runnable;
-  for (const std::string& n : green_kernel_builds()) runnable += (runnable.empty() ? "" : ", ") + n;
   throw std::invalid_argument("the force kernel build '" + std::string(name) +
-                              "' is not one this processor runs (" + runnable + ")");
+                              "' is not one this processor runs (" + green_kernel_build_list() +
+                              ")");
 }
 
 void green_nodal_forces(const LevelModel& m, const int* tets, int count, const Vec3* u,

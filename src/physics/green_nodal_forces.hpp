@@ -43,8 +43,9 @@ void green_scatter_packed(const LevelModel& m, PackedTets& packed, const Vec3* u
 /// summary.json and `mrsim --version` say it, since it sets the speed.
 const char* green_kernel_name();
 
-/// The builds this processor runs, widest first.
+/// The builds this processor runs, widest first; and the same as text, "avx512, avx2, baseline".
 std::vector<std::string> green_kernel_builds();
+std::string green_kernel_build_list();
 
 /// Runs the build named (one of green_kernel_builds()) from now on: `MRSIM_KERNEL`, for a
 /// processor that slows its clock under AVX-512, and to check that every build gives the same

@@ -22,6 +22,7 @@ PASSED = []
 def check(cond, what):
     print(("ok   " if cond else "FAIL ") + what)
     (PASSED if cond else FAILURES).append(what)
+    return cond
 
 
 def report():

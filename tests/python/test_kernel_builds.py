@@ -5,31 +5,26 @@ adaptive levels, a tool, Green-Lagrange, damped) cut short, run with MRSIM_KERNE
 build `mrsim --version` lists, compared at rtol = atol = 0 with `mrsim compare` (log.h5, every
 VTU array, summary.json); summary.json names the build that ran. An unknown or unsupported
 build is an input error (exit 2) that names the builds the processor runs."""
-import argparse
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
-FAILURES = []
-PASSED = []
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import test_cli_run as cli  # noqa: E402  (shared helpers: check, parse_args, report, run)
 
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    (PASSED if cond else FAILURES).append(what)
-    return cond
+check = cli.check
 
 
 def run(binary, *args, kernel=None, cache=None):
+    """mrsim with MRSIM_KERNEL set to `kernel` (unset for None) and its own cache folder."""
     env = dict(os.environ)
     env.pop("MRSIM_KERNEL", None)
     if kernel is not None:
         env["MRSIM_KERNEL"] = kernel
     if cache is not None:
         env["MRSIM_CACHE_DIR"] = cache
-    return subprocess.run([binary, *args], capture_output=True, text=True, env=env, timeout=600)
+    return cli.run(binary, *args, env=env)
 
 
 def builds_listed(binary):
@@ -42,11 +37,9 @@ def builds_listed(binary):
 
 
 def main():
-    p = argparse.ArgumentParser()
-    p.add_argument("--binary", required=True)
-    p.add_argument("--source", required=True)
-    p.add_argument("--shared")
-    args = p.parse_args()
+    args = cli.parse_args()
+    if args is None:
+        return 77
     default, listed = builds_listed(args.binary)
     check(default in ("avx512", "avx2", "baseline") and listed and listed[0] == default
           and listed[-1] == "baseline",
@@ -79,8 +72,7 @@ def main():
               and not os.path.exists(os.path.join(tmp, "bad")),
               "MRSIM_KERNEL=sse9: exit 2 naming the builds, nothing written (%d: %s)"
               % (r.returncode, r.stderr.strip()))
-    print("%d passed, %d failed" % (len(PASSED), len(FAILURES)))
-    return 1 if FAILURES else 0
+    return cli.report()
 
 
 if __name__ == "__main__":
