@@ -4,7 +4,6 @@
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
-#include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -15,43 +14,29 @@
 #include <vector>
 
 #include "io/vtk_arrays.hpp"
+#include "io/vtk_tetra_cells.hpp"
 
 namespace mrsim {
 namespace {
 
 using Triangle = std::array<int, 3>;
 
-// Triangles in VTK 9's offsets + connectivity layout, filled directly (as tetra_cells does).
-// Each piece's corners are shifted by the number of points before it in the block.
-class TriangleCells {
- public:
-  explicit TriangleCells(vtkIdType triangles) {
-    offsets_->SetNumberOfValues(triangles + 1);
-    connectivity_->SetNumberOfValues(3 * triangles);
-    offsets_->SetValue(0, 0);
-  }
-
-  void add(std::span<const Triangle> triangles, vtkIdType first_point) {
-    for (const Triangle& triangle : triangles) {
-      for (int c = 0; c < 3; ++c) {
-        connectivity_->SetValue(3 * count_ + c, first_point + triangle[c]);
-      }
-      ++count_;
-      offsets_->SetValue(count_, 3 * count_);
-    }
-  }
-
-  vtkSmartPointer<vtkCellArray> cells() const {
-    auto cells = vtkSmartPointer<vtkCellArray>::New();
-    cells->SetData(offsets_, connectivity_);
-    return cells;
-  }
-
- private:
-  vtkSmartPointer<vtkIdTypeArray> offsets_ = vtkSmartPointer<vtkIdTypeArray>::New();
-  vtkSmartPointer<vtkIdTypeArray> connectivity_ = vtkSmartPointer<vtkIdTypeArray>::New();
-  vtkIdType count_ = 0;
+// Triangles, each piece's corners shifted by the number of points before it in the block.
+struct TrianglePiece {
+  std::span<const Triangle> triangles;
+  vtkIdType first_point = 0;
 };
+
+vtkSmartPointer<vtkCellArray> triangle_cells(std::span<const TrianglePiece> pieces,
+                                             vtkIdType points) {
+  std::vector<std::array<vtkIdType, 3>> corners;
+  for (const TrianglePiece& piece : pieces)
+    for (const Triangle& t : piece.triangles)
+      corners.push_back({piece.first_point + t[0], piece.first_point + t[1],
+                         piece.first_point + t[2]});
+  return uniform_cells<3>(static_cast<vtkIdType>(corners.size()), points,
+                          [&](vtkIdType c, int k) { return corners[c][k]; });
+}
 
 vtkSmartPointer<vtkPoints> deformed_points(const SurfaceFrameView& surface) {
   auto points = double_points(static_cast<vtkIdType>(surface.rest.size()));
@@ -94,13 +79,13 @@ vtkSmartPointer<vtkPoints> tool_points(std::span<const ToolFrameView> tools) {
 }
 
 vtkSmartPointer<vtkCellArray> tool_triangles(std::span<const ToolFrameView> tools) {
-  TriangleCells cells(total_triangles(tools));
+  std::vector<TrianglePiece> pieces;
   vtkIdType first_point = 0;
   for (const ToolFrameView& tool : tools) {
-    cells.add(tool.triangles, first_point);
+    pieces.push_back({tool.triangles, first_point});
     first_point += static_cast<vtkIdType>(tool.points.size());
   }
-  return cells.cells();
+  return triangle_cells(pieces, first_point);
 }
 
 // Cell array `tool`: which tool each triangle belongs to (to colour or threshold by tool).
@@ -125,9 +110,8 @@ vtkSmartPointer<vtkDoubleArray> tool_force_array(std::span<const ToolFrameView> 
 vtkSmartPointer<vtkPolyData> make_surface_block(const SurfaceFrameView& surface, double time) {
   auto block = vtkSmartPointer<vtkPolyData>::New();
   block->SetPoints(deformed_points(surface));
-  TriangleCells cells(static_cast<vtkIdType>(surface.triangles.size()));
-  cells.add(surface.triangles, 0);
-  block->SetPolys(cells.cells());
+  const TrianglePiece piece{surface.triangles, 0};
+  block->SetPolys(triangle_cells({&piece, 1}, static_cast<vtkIdType>(surface.rest.size())));
   add_surface_arrays(block->GetPointData(), surface);
   add_time_value(block->GetFieldData(), time);
   return block;

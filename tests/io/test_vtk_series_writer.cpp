@@ -26,6 +26,7 @@
 #include "core/error.hpp"
 #include "io/vtk_error_capture.hpp"
 #include "io/vtk_series_writer.hpp"
+#include "io/vtk_tetra_cells.hpp"
 #include "vtk_read_checks.hpp"
 #include "sample_frames.hpp"
 #include "temp_dir.hpp"
@@ -150,6 +151,9 @@ TEST_P(VtkCompression, PiecesAreCompressedAsAskedBinaryAndReadableAlone) {
           << piece;
     EXPECT_NE(xml.find("format=\"appended\""), std::string::npos) << piece;
     EXPECT_NE(xml.find("type=\"Int8\" Name=\"status\""), std::string::npos) << piece;
+    // 32-bit cells: half the bytes of VTK's 64-bit ids to compress and write.
+    EXPECT_NE(xml.find("type=\"Int32\" Name=\"connectivity\""), std::string::npos) << piece;
+    EXPECT_NE(xml.find("type=\"Int32\" Name=\"offsets\""), std::string::npos) << piece;
     auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
     reader->SetFileName(piece.c_str());
     reader->Update();
@@ -289,6 +293,32 @@ TEST(VtkSeriesWriter, RejectsArraysOfTheWrongSize) {
     FAIL() << "expected invalid_argument";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("level_1: mass"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace mrsim
+
+namespace mrsim {
+namespace {
+
+// Cells whose indices fit 32 bits are stored in 32 bits; a mesh with more points than that
+// (or more connectivity entries) keeps VTK's 64-bit ids, with the same cells.
+TEST(UniformCells, ThirtyTwoBitsWhenEveryIndexFitsElseSixtyFour) {
+  const std::array<std::array<vtkIdType, 3>, 2> corners{{{0, 1, 2}, {2, 1, 3000000000}}};
+  auto corner = [&](vtkIdType c, int k) { return corners[c][k]; };
+  const auto small = uniform_cells<3>(1, 3, corner);
+  EXPECT_FALSE(small->IsStorage64Bit());
+  const auto large = uniform_cells<3>(2, 3000000001, corner);
+  EXPECT_TRUE(large->IsStorage64Bit());
+  for (const auto& cells : {small, large}) {
+    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c) {
+      vtkIdType n = 0;
+      const vtkIdType* ids = nullptr;
+      cells->GetCellAtId(c, n, ids);
+      ASSERT_EQ(n, 3);
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(ids[k], corners[c][k]);
+    }
   }
 }
 
