@@ -52,16 +52,23 @@ double mean_tet_volume(const TetMesh& m) {
   return v / std::max<std::size_t>(1, m.tets.size());
 }
 
+std::vector<TetLocator> level_locators(const Hierarchy& h) {
+  std::vector<TetLocator> locators;
+  locators.reserve(h.num_levels());
+  for (int m = 0; m < h.num_levels(); ++m) locators.emplace_back(*h.level(m).mesh);
+  return locators;
+}
+
 }  // namespace
 
-LevelOwnership::LevelOwnership(const Hierarchy& h)
+LevelOwnership::LevelOwnership(const Hierarchy& h) : LevelOwnership(h, level_locators(h)) {}
+
+LevelOwnership::LevelOwnership(const Hierarchy& h, const std::vector<TetLocator>& locators)
     : levels_(h.num_levels()), start_(levels_), where_(levels_) {
-  std::vector<TetLocator> locators;
-  std::vector<std::vector<std::array<int, 4>>> neighbours;
-  for (int m = 0; m < levels_; ++m) {
-    locators.emplace_back(*h.level(m).mesh);
-    neighbours.push_back(tet_neighbours(*h.level(m).mesh));
-  }
+  // Level 0 is never searched (owner() gives it what no finer level claims): neither its
+  // neighbours nor its locator are needed.
+  std::vector<std::vector<std::array<int, 4>>> neighbours(levels_);
+  for (int m = 1; m < levels_; ++m) neighbours[m] = tet_neighbours(*h.level(m).mesh);
   const double unit = mean_tet_volume(*h.level(levels_ - 1).mesh);
   for (int l = 0; l < levels_; ++l) {
     const TetMesh& mesh = *h.level(l).mesh;
@@ -89,7 +96,8 @@ LevelOwnership::LevelOwnership(const Hierarchy& h)
       std::sort(order.begin(), order.end());
       for (const auto& [key, i] : order) {
         std::int32_t* at = &where_[l][static_cast<std::size_t>(first + i) * levels_];
-        for (int m = 0; m < levels_; ++m) {
+        at[0] = l == 0 ? static_cast<std::int32_t>(t) : -1;
+        for (int m = 1; m < levels_; ++m) {
           if (m == l) {
             at[m] = static_cast<std::int32_t>(t);
             continue;

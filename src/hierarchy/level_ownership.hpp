@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "hierarchy/hierarchy.hpp"
+#include "hierarchy/tet_locator.hpp"
 
 namespace mrsim {
 
@@ -20,6 +21,8 @@ class LevelOwnership {
   /// O(Σ samples × levels) point locations, once; about levels × the finest level's tets
   /// samples in all.
   explicit LevelOwnership(const Hierarchy& h);
+  /// The same with each level's locator given (`locators[l]` over level l's mesh).
+  LevelOwnership(const Hierarchy& h, const std::vector<TetLocator>& locators);
 
   /// Takes the hierarchy's current statuses: which tets of each level have no inactive vertex.
   /// O(tets of all levels); call it before shares() whenever the statuses may have changed.
@@ -38,7 +41,8 @@ class LevelOwnership {
 
   int levels_ = 0;
   std::vector<std::vector<std::int32_t>> start_;  // [level][tet]: its first sample (CSR)
-  // where_[l][s * levels_ + m]: the tet of level m holding sample s of level l.
+  // where_[l][s * levels_ + m]: the tet of level m holding sample s of level l (m ≥ 1; level 0
+  // takes whatever no finer level claims, so where a sample lies in it is never asked).
   std::vector<std::vector<std::int32_t>> where_;
   std::vector<std::vector<std::uint8_t>> covered_;  // [level][tet]: no inactive vertex (observe)
 };

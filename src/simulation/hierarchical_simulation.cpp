@@ -48,11 +48,10 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
           build_level_model(*meshes[l], law, is_semi_implicit(setup.integrator), held)));
     levels.push_back({meshes[l], &models_[l]->adj});
   }
-  // One locator per level, for the level links and the skin binding.
-  std::vector<TetLocator> locators;
-  locators.reserve(L);
-  for (int l = 0; l < L; ++l) locators.emplace_back(*meshes[l]);
-  hierarchy_ = std::make_unique<Hierarchy>(levels, build_level_links(levels, locators));
+  // One locator per level, for the level links, the skin binding and the level ownership.
+  locators_.reserve(L);
+  for (int l = 0; l < L; ++l) locators_.emplace_back(*meshes[l]);
+  hierarchy_ = std::make_unique<Hierarchy>(levels, build_level_links(levels, locators_));
   lists_ = std::make_unique<StatusLists>(*hierarchy_);
   states_.resize(L);
   fixed_.resize(L);
@@ -102,7 +101,7 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   if (!setup.tools.empty()) {
     Skin skin = setup.skin ? *setup.skin : boundary_skin(*meshes.back());
     SkinBinding binding =
-        bind_skin(skin, locators, L >= 2 ? &hierarchy_->links(L - 1).parent_tet : nullptr);
+        bind_skin(skin, locators_, L >= 2 ? &hierarchy_->links(L - 1).parent_tet : nullptr);
     contact_ = std::make_unique<SkinContact>(std::move(skin), std::move(binding), setup.tools,
                                              setup.law.lambda + 2.0 * setup.law.mu);
   }

@@ -17,6 +17,7 @@
 #include "hierarchy/level_calibration.hpp"
 #include "hierarchy/patch_test_weights.hpp"
 #include "hierarchy/status_lists.hpp"
+#include "hierarchy/tet_locator.hpp"
 #include "io/checkpoint_data.hpp"
 #include "physics/level_model.hpp"
 #include "simulation/level_force_field.hpp"
@@ -66,6 +67,9 @@ class HierarchicalSimulation {
   const PointState& state(int l) const { return states_[l]; }
   PointState& state(int l) { return states_[l]; }
   const Hierarchy& hierarchy() const { return *hierarchy_; }
+  /// One point locator per level (static; built for the level links and the skin binding, kept
+  /// for the frames' level ownership).
+  const std::vector<TetLocator>& locators() const { return locators_; }
   /// The calibration fit of each level (empty without object.calibration).
   const std::vector<LevelCalibration>& calibration() const { return calibration_; }
   const StatusLists& lists() const { return *lists_; }
@@ -213,6 +217,7 @@ class HierarchicalSimulation {
   std::vector<std::unique_ptr<LevelModel>> models_;
   std::vector<LevelCalibration> calibration_;
   std::vector<PointState> states_;
+  std::vector<TetLocator> locators_;
   std::unique_ptr<Hierarchy> hierarchy_;
   std::unique_ptr<StatusLists> lists_;
   std::vector<std::unique_ptr<LevelForceField>> forces_;

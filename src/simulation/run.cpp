@@ -268,7 +268,7 @@ class FrameWriter {
 
   void write_vtk(int frame, double time) {
     sim_.fill_inactive();  // every level shows the whole deformed object
-    if (!ownership_) ownership_ = std::make_unique<LevelOwnership>(sim_.hierarchy());
+    if (!ownership_) ownership_ = std::make_unique<LevelOwnership>(sim_.hierarchy(), sim_.locators());
     // The shares follow the statuses only: recounted after a topology change, else kept.
     const bool coverage_changed = ownership_->observe(sim_.hierarchy());
     std::vector<LevelFrameView> views(L_);

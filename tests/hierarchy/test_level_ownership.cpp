@@ -73,3 +73,22 @@ TEST(LevelOwnership, SharesCoverTheObjectFollowSplitsAndObserveSaysWhenTheyChang
   EXPECT_EQ(back.share, start.share);
   EXPECT_EQ(back.owner, start.owner);
 }
+
+// The frames build the ownership with the simulation's own locators; the shares are those of
+// the ownership that builds its own, in every coverage.
+TEST(LevelOwnership, GivenLocatorsGiveTheSameShares) {
+  const ThreeLevels f;
+  Hierarchy h = f.make();
+  std::vector<TetLocator> locators;
+  for (const TetMesh& m : f.meshes) locators.emplace_back(m);
+  LevelOwnership own(h), given(h, locators);
+  for (int round = 0; round < 2; ++round) {
+    own.observe(h);
+    given.observe(h);
+    const Shares a = shares_of(own, 3), b = shares_of(given, 3);
+    EXPECT_EQ(a.share, b.share);
+    EXPECT_EQ(a.owner, b.owner);
+    for (int p = 0; p < h.num_points(0); ++p)
+      if (f.meshes[0].points[p].x() < 0.05 && h.can_split(0, p)) h.split(0, p);
+  }
+}
