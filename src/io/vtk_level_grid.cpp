@@ -36,22 +36,44 @@ void add_point_arrays(vtkPointData* data, const LevelFrameView& view) {
   data->SetActiveVectors("displacement");
 }
 
-}  // namespace
-
-vtkSmartPointer<vtkUnstructuredGrid> make_level_grid(const LevelFrameView& view, double time) {
-  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+// Points, point and cell arrays and the time of a frame, on a grid that already has its cells.
+void fill_level_grid(vtkUnstructuredGrid* grid, const LevelFrameView& view, double time) {
   grid->SetPoints(deformed_points(view));
-  grid->SetCells(VTK_TETRA, tetra_cells(*view.mesh));
+  grid->GetPointData()->Initialize();
   add_point_arrays(grid->GetPointData(), view);
   // What the level simulates of each tet: a Threshold `simulated` >= 0.5 on every level block
   // shows the object once, each part on its level (docs/output.md "ParaView").
+  grid->GetCellData()->Initialize();
   if (!view.simulated.empty())
     grid->GetCellData()->AddArray(scalar_array<vtkDoubleArray>("simulated", view.simulated));
   if (!view.simulated_by.empty())
     grid->GetCellData()->AddArray(
         scalar_array<vtkSignedCharArray>("simulated_by", view.simulated_by));
+  grid->GetFieldData()->Initialize();
   add_time_value(grid->GetFieldData(), time);
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkUnstructuredGrid> make_level_grid(const LevelFrameView& view, double time) {
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetCells(VTK_TETRA, tetra_cells(*view.mesh));
+  fill_level_grid(grid, view, time);
   return grid;
+}
+
+vtkUnstructuredGrid* LevelGrids::update(std::size_t level, const LevelFrameView& view,
+                                        double time) {
+  if (kept_.size() <= level) kept_.resize(level + 1);
+  Kept& kept = kept_[level];
+  if (kept.mesh != view.mesh || kept.points != view.mesh->points.size() ||
+      kept.tets != view.mesh->tets.size() || !kept.grid) {
+    kept = {view.mesh, view.mesh->points.size(), view.mesh->tets.size(),
+            make_level_grid(view, time)};
+    return kept.grid;
+  }
+  fill_level_grid(kept.grid, view, time);
+  return kept.grid;
 }
 
 }  // namespace mrsim

@@ -55,13 +55,14 @@ void append_block(vtkMultiBlockDataSet* blocks, vtkDataObject* block, const std:
 
 // Levels first, then surface and tool: readers look blocks up by name, and the level blocks
 // keep the positions they had before the other two existed.
-vtkSmartPointer<vtkMultiBlockDataSet> frame_blocks(std::span<const LevelFrameView> levels,
+vtkSmartPointer<vtkMultiBlockDataSet> frame_blocks(LevelGrids& grids,
+                                                   std::span<const LevelFrameView> levels,
                                                    const SurfaceFrameView* surface,
                                                    std::span<const ToolFrameView> tools,
                                                    double time) {
   auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
   for (std::size_t k = 0; k < levels.size(); ++k) {
-    append_block(blocks, make_level_grid(levels[k], time), "level_" + std::to_string(k));
+    append_block(blocks, grids.update(k, levels[k], time), "level_" + std::to_string(k));
   }
   if (surface != nullptr) append_block(blocks, make_surface_block(*surface, time), "surface");
   if (!tools.empty()) append_block(blocks, make_tool_block(tools, time), "tool");
@@ -155,8 +156,13 @@ void write_vtm(const std::filesystem::path& file, vtkMultiBlockDataSet* blocks,
 
 }  // namespace
 
+VtkSeriesWriter::~VtkSeriesWriter() = default;
+VtkSeriesWriter::VtkSeriesWriter(VtkSeriesWriter&&) noexcept = default;
+VtkSeriesWriter& VtkSeriesWriter::operator=(VtkSeriesWriter&&) noexcept = default;
+
 VtkSeriesWriter::VtkSeriesWriter(std::filesystem::path out_dir, FrameCompression compression)
-    : out_dir_(std::move(out_dir)), compression_(compression) {
+    : out_dir_(std::move(out_dir)), compression_(compression),
+      grids_(std::make_unique<LevelGrids>()) {
   // Created up front so that an unusable output folder fails the run before any step.
   std::error_code ec;
   std::filesystem::create_directories(out_dir_ / kFramesDir, ec);
@@ -171,7 +177,7 @@ void VtkSeriesWriter::write_frame(int frame_index, double time,
                                   std::span<const ToolFrameView> tools) {
   check_frame(levels, surface, tools);
   const std::filesystem::path relative = frame_file(frame_index);
-  write_complete(relative, frame_blocks(levels, surface, tools, time));
+  write_complete(relative, frame_blocks(*grids_, levels, surface, tools, time));
   // Listed only once its file is complete: the .pvd never names a half-written frame.
   entries_.push_back({frame_index, time, relative});
   write_pvd();

@@ -5,6 +5,7 @@
 // frame with its simulated time at full precision. The .pvd is rewritten after each frame (write
 // to a temporary file, then rename) so a run killed or failed mid-way leaves a valid series.
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <utility>
 #include <vector>
@@ -16,10 +17,15 @@ class vtkMultiBlockDataSet;
 
 namespace mrsim {
 
+class LevelGrids;
+
 class VtkSeriesWriter {
  public:
   explicit VtkSeriesWriter(std::filesystem::path out_dir,
                            FrameCompression compression = FrameCompression::Lz4);
+  ~VtkSeriesWriter();
+  VtkSeriesWriter(VtkSeriesWriter&&) noexcept;
+  VtkSeriesWriter& operator=(VtkSeriesWriter&&) noexcept;
   /// Writes one frame (all levels, then the `surface` block when `surface` is given and the
   /// `tool` block when `tools` is not empty) and updates frames.pvd. Throws RunError on I/O
   /// failure, std::invalid_argument (before writing anything) on inconsistent sizes.
@@ -40,6 +46,7 @@ class VtkSeriesWriter {
   std::filesystem::path out_dir_;
   FrameCompression compression_;
   std::vector<Entry> entries_;
+  std::unique_ptr<LevelGrids> grids_;  // each level's grid, its cells built once
 };
 
 }  // namespace mrsim

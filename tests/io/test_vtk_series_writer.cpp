@@ -126,6 +126,24 @@ TEST(VtkSeriesWriter, WritesOneMultiblockPerFrameWithNamedLevelBlocks) {
   }
 }
 
+// The writer keeps each block's grid from frame to frame (io/vtk_level_grid.hpp); a block whose
+// mesh is another one in the next frame gets that mesh's cells.
+TEST(VtkSeriesWriter, ABlockWhoseMeshChangesGetsTheNewCells) {
+  test::TempDir dir;
+  VtkSeriesWriter writer(dir.path());
+  const auto first = test::sample_frame(0);
+  writer.write_frame(0, kSampleTimes[0], test::views_of(first));
+  const auto second = test::sample_frame(1);
+  const std::vector<LevelFrameView> swapped{second[1].view(), second[0].view()};
+  writer.write_frame(1, kSampleTimes[1], swapped);
+  auto blocks = read_vtm(dir.path() / "frames" / "frame_000001.vtm");
+  ASSERT_NE(blocks, nullptr);
+  ASSERT_EQ(blocks->GetNumberOfBlocks(), 2u);
+  for (unsigned k = 0; k < 2; ++k)
+    expect_level_grid(vtkUnstructuredGrid::SafeDownCast(blocks->GetBlock(k)), second[1 - k],
+                      kSampleTimes[1]);
+}
+
 // Each compression the scenario can ask for (output.compression) is what the pieces declare,
 // and VTK's reader gives the frame back exactly.
 class VtkCompression
