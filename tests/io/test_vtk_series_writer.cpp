@@ -321,7 +321,8 @@ namespace mrsim {
 namespace {
 
 // Cells whose indices fit 32 bits are stored in 32 bits; a mesh with more points than that
-// (or more connectivity entries) keeps VTK's 64-bit ids, with the same cells.
+// (or more connectivity entries) keeps VTK's 64-bit ids, with the same cells, as do cells asked
+// wide.
 TEST(UniformCells, ThirtyTwoBitsWhenEveryIndexFitsElseSixtyFour) {
   const std::array<std::array<vtkIdType, 3>, 2> corners{{{0, 1, 2}, {2, 1, 3000000000}}};
   auto corner = [&](vtkIdType c, int k) { return corners[c][k]; };
@@ -329,7 +330,9 @@ TEST(UniformCells, ThirtyTwoBitsWhenEveryIndexFitsElseSixtyFour) {
   EXPECT_FALSE(small->IsStorage64Bit());
   const auto large = uniform_cells<3>(2, 3000000001, corner);
   EXPECT_TRUE(large->IsStorage64Bit());
-  for (const auto& cells : {small, large}) {
+  const auto wide = uniform_cells<3>(1, 3, corner, CellIds::Wide);  // `mrsim mesh`'s level files
+  EXPECT_TRUE(wide->IsStorage64Bit());
+  for (const auto& cells : {small, large, wide}) {
     for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c) {
       vtkIdType n = 0;
       const vtkIdType* ids = nullptr;
