@@ -2,6 +2,7 @@
 
 #include "cli/app.hpp"
 #include "core/huge_page_heap.hpp"
+#include "core/processor_count.hpp"
 
 int main(int argc, char** argv) {
   // VTK's own threads (Debian builds its SMP tools on TBB) computed array ranges for the frames'
@@ -12,5 +13,7 @@ int main(int argc, char** argv) {
   // The meshes, the levels' operators and the log's buffers: tens of MiB written once at
   // set-up, in 2 MiB pages rather than thousands of 4 KiB faults (core/huge_page_heap.hpp).
   mrsim::reserve_huge_page_heap(std::size_t{64} << 20);
+  // Counted once, for every library that asks (core/processor_count.hpp).
+  mrsim::online_processors();
   return mrsim::run_cli(argc, argv);
 }
