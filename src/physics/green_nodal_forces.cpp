@@ -55,12 +55,12 @@ namespace {
 enum class KernelBuild { Baseline, Avx2, Avx512 };
 
 constexpr const char* kBuildNames[] = {"baseline", "avx2", "avx512"};
+constexpr KernelBuild kWidestFirst[] = {KernelBuild::Avx512, KernelBuild::Avx2,
+                                        KernelBuild::Baseline};
 
 bool runs(KernelBuild b) {
   switch (b) {
-#if defined(MRSIM_AVX512_KERNEL)
-    case KernelBuild::Avx512: return has_avx512_kernel();
-#endif
+    case KernelBuild::Avx512: return has_avx512_kernel();  // false without the AVX-512 file
 #if defined(MRSIM_AVX2_KERNEL)
     case KernelBuild::Avx2: return __builtin_cpu_supports("avx2");
 #endif
@@ -72,7 +72,7 @@ bool runs(KernelBuild b) {
 // The widest build the processor runs, found once (thread-safe: a static's initialisation).
 KernelBuild widest_build() {
   static const KernelBuild build = [] {
-    for (const KernelBuild b : {KernelBuild::Avx512, KernelBuild::Avx2})
+    for (const KernelBuild b : kWidestFirst)
       if (runs(b)) return b;
     return KernelBuild::Baseline;
   }();
@@ -93,7 +93,7 @@ const char* green_kernel_name() { return kBuildNames[static_cast<int>(kernel_bui
 
 std::vector<std::string> green_kernel_builds() {
   std::vector<std::string> names;
-  for (const KernelBuild b : {KernelBuild::Avx512, KernelBuild::Avx2, KernelBuild::Baseline})
+  for (const KernelBuild b : kWidestFirst)
     if (runs(b)) names.emplace_back(kBuildNames[static_cast<int>(b)]);
   return names;
 }
@@ -105,7 +105,7 @@ std::string green_kernel_build_list() {
 }
 
 void choose_green_kernel(std::string_view name) {
-  for (const KernelBuild b : {KernelBuild::Avx512, KernelBuild::Avx2, KernelBuild::Baseline})
+  for (const KernelBuild b : kWidestFirst)
     if (name == kBuildNames[static_cast<int>(b)] && runs(b)) {
       chosen.store(static_cast<int>(b), std::memory_order_relaxed);
       return;
