@@ -1,6 +1,7 @@
 #include "io/vtk_series_writer.hpp"
 
 #include <vtkCompositeDataSet.h>
+#include <vtkDataCompressor.h>
 #include <vtkErrorCode.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
@@ -21,6 +22,7 @@
 #include "io/pvd_file.hpp"
 #include "io/vtk_error_capture.hpp"
 #include "io/vtk_level_grid.hpp"
+#include "io/vtk_repeat_compressor.hpp"
 #include "io/vtk_surface_blocks.hpp"
 
 namespace mrsim {
@@ -71,30 +73,23 @@ vtkSmartPointer<vtkMultiBlockDataSet> frame_blocks(LevelGrids& grids,
 
 // liver_probe (four levels every 20 ms, 70 frames, one thread): zlib level 5 (VTK's default)
 // 3.13 s of output, level 1 2.50 s for 45 MB, LZ4 about 0.9 s for 58 MB: LZ4 by default, so
-// that writing frames does not keep a run from its simulated time; zlib to keep smaller files.
-void set_compression(vtkXMLWriter* writer, FrameCompression compression) {
-  switch (compression) {
-    case FrameCompression::Lz4:
-      writer->SetCompressorTypeToLZ4();
-      break;
-    case FrameCompression::Zlib:
-      writer->SetCompressorTypeToZLib();
-      writer->SetCompressionLevel(1);
-      break;
-    case FrameCompression::None:
-      writer->SetCompressorTypeToNone();
-      break;
-  }
+// that writing frames does not keep a run from its simulated time; zlib to keep smaller files
+// (io/vtk_repeat_compressor.hpp sets the levels, and compresses only the blocks that changed).
+void set_compressor(vtkXMLWriter* writer, vtkDataCompressor* compressor) {
+  if (compressor != nullptr)
+    writer->SetCompressor(compressor);
+  else
+    writer->SetCompressorTypeToNone();
 }
 
 // One block into memory: the XML writer patches offsets by seeking back in its stream, which on
 // a file is a flush and two lseek per array (1 100 writes and 1 200 seeks a liver_probe frame);
 // in a string it costs nothing, and the piece is then written with one call.
 template <class Writer>
-std::string piece_text(vtkDataObject* block, FrameCompression compression, const std::string& name) {
+std::string piece_text(vtkDataObject* block, vtkDataCompressor* compressor, const std::string& name) {
   auto writer = vtkSmartPointer<Writer>::New();
   writer->SetInputData(block);
-  set_compression(writer, compression);
+  set_compressor(writer, compressor);
   // Raw appended binary: the smallest and fastest XML form ParaView and vtk read.
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
@@ -127,7 +122,7 @@ void write_text(const std::filesystem::path& file, const std::string& text) {
 // The frame as vtkXMLMultiBlockDataWriter lays it out (a .vtm naming one file per block in a
 // folder of the frame's name, the same bytes in every piece), each piece written at once.
 void write_vtm(const std::filesystem::path& file, vtkMultiBlockDataSet* blocks,
-               FrameCompression compression) {
+               FrameCompression compression, vtkDataCompressor* compressor) {
   namespace fs = std::filesystem;
   const std::string stem = file.stem().string();
   std::error_code ec;
@@ -144,8 +139,8 @@ void write_vtm(const std::filesystem::path& file, vtkMultiBlockDataSet* blocks,
     const bool grid = vtkUnstructuredGrid::SafeDownCast(block) != nullptr;
     const std::string piece = stem + "/" + stem + "_" + std::to_string(k) + (grid ? ".vtu" : ".vtp");
     const fs::path path = file.parent_path() / piece;
-    write_text(path, grid ? piece_text<vtkXMLUnstructuredGridWriter>(block, compression, path.string())
-                          : piece_text<vtkXMLPolyDataWriter>(block, compression, path.string()));
+    write_text(path, grid ? piece_text<vtkXMLUnstructuredGridWriter>(block, compressor, path.string())
+                          : piece_text<vtkXMLPolyDataWriter>(block, compressor, path.string()));
     const char* name = blocks->GetMetaData(k)->Get(vtkCompositeDataSet::NAME());
     vtm += "    <DataSet index=\"" + std::to_string(k) + "\" name=\"" + name + "\" file=\"" + piece +
            "\"/>\n";
@@ -162,7 +157,8 @@ VtkSeriesWriter& VtkSeriesWriter::operator=(VtkSeriesWriter&&) noexcept = defaul
 
 VtkSeriesWriter::VtkSeriesWriter(std::filesystem::path out_dir, FrameCompression compression)
     : out_dir_(std::move(out_dir)), compression_(compression),
-      grids_(std::make_unique<LevelGrids>()) {
+      grids_(std::make_unique<LevelGrids>()),
+      compressor_(std::make_unique<FrameCompressor>(compression)) {
   // Created up front so that an unusable output folder fails the run before any step.
   std::error_code ec;
   std::filesystem::create_directories(out_dir_ / kFramesDir, ec);
@@ -170,6 +166,8 @@ VtkSeriesWriter::VtkSeriesWriter(std::filesystem::path out_dir, FrameCompression
     throw RunError("cannot create " + (out_dir_ / kFramesDir).string() + ": " + ec.message());
   }
 }
+
+std::size_t VtkSeriesWriter::reused_blocks() const { return compressor_->blocks().reused(); }
 
 void VtkSeriesWriter::write_frame(int frame_index, double time,
                                   std::span<const LevelFrameView> levels,
@@ -197,7 +195,8 @@ void VtkSeriesWriter::write_complete(const std::filesystem::path& relative,
   if (ec)
     throw RunError("cannot write " + (out_dir_ / relative).string() + ": cannot create " +
                    partial.string() + ": " + ec.message());
-  write_vtm(partial / vtm, blocks, compression_);
+  compressor_->begin_frame();
+  write_vtm(partial / vtm, blocks, compression_, compressor_->get());
   if (fs::exists(partial / pieces, ec)) fs::rename(partial / pieces, frames / pieces, ec);
   if (!ec) fs::rename(partial / vtm, frames / vtm, ec);
   if (ec)

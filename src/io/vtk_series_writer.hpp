@@ -17,6 +17,7 @@ class vtkMultiBlockDataSet;
 
 namespace mrsim {
 
+class FrameCompressor;
 class LevelGrids;
 
 class VtkSeriesWriter {
@@ -33,6 +34,8 @@ class VtkSeriesWriter {
                    const SurfaceFrameView* surface = nullptr,
                    std::span<const ToolFrameView> tools = {});
   int frames_written() const { return static_cast<int>(entries_.size()); }
+  /// Compressed blocks taken unchanged from the frame before (io/vtk_repeat_compressor.hpp).
+  std::size_t reused_blocks() const;
   /// Goes on with the series of a run resumed after frame `last` (mrsim run --resume): `kept`
   /// (index, time) are its frames up to there, each of which must be complete on disk (else
   /// InputError). Every later frame and any partial one are removed (a run killed after its
@@ -47,6 +50,7 @@ class VtkSeriesWriter {
   FrameCompression compression_;
   std::vector<Entry> entries_;
   std::unique_ptr<LevelGrids> grids_;  // each level's grid, its cells built once
+  std::unique_ptr<FrameCompressor> compressor_;  // compresses the blocks that changed
 };
 
 }  // namespace mrsim

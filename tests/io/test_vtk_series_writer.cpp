@@ -219,6 +219,30 @@ TEST_P(VtkCompression, FramesAreTheBytesOfVtksMultiblockWriter) {
         << piece << " (" << compressor << ")";
 }
 
+// The cells do not change from frame to frame: from the second frame on, their blocks are not
+// compressed again (the bytes are still VTK's: FramesAreTheBytesOfVtksMultiblockWriter).
+TEST(VtkSeriesWriter, UnchangedBlocksAreNotCompressedAgain) {
+  test::TempDir dir;
+  VtkSeriesWriter writer(dir.path());
+  std::size_t reused = 0;
+  for (int f = 0; f < 3; ++f) {
+    const auto levels = test::sample_frame(f);
+    writer.write_frame(f, kSampleTimes[f], test::views_of(levels));
+    if (f == 0) {
+      EXPECT_EQ(writer.reused_blocks(), 0u);
+    } else {  // connectivity, offsets and types of both levels at least
+      EXPECT_GE(writer.reused_blocks(), reused + 6) << "frame " << f;
+    }
+    reused = writer.reused_blocks();
+  }
+  test::TempDir plain;
+  VtkSeriesWriter uncompressed(plain.path(), FrameCompression::None);
+  const auto levels = test::sample_frame(0);
+  uncompressed.write_frame(0, kSampleTimes[0], test::views_of(levels));
+  uncompressed.write_frame(1, kSampleTimes[1], test::views_of(levels));
+  EXPECT_EQ(uncompressed.reused_blocks(), 0u);
+}
+
 TEST(VtkSeriesWriter, PvdListsEveryFrameWithExactTimes) {
   test::TempDir dir;
   write_three_frames(dir.path());
