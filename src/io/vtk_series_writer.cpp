@@ -13,6 +13,7 @@
 #include <array>
 #include <cerrno>
 #include <cstdio>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -82,27 +83,47 @@ void set_compressor(vtkXMLWriter* writer, vtkDataCompressor* compressor) {
     writer->SetCompressorTypeToNone();
 }
 
+// A VTK XML writer that writes into the stream it is given: VTK's writers keep a protected
+// `Stream`, used as is when set (vtkXMLWriter::OpenStream), which their own string output would
+// otherwise create, copy twice when done and free for every piece.
+template <class Writer>
+class StreamWriter : public Writer {
+ public:
+  static StreamWriter* make() {
+    auto* w = new StreamWriter;
+    w->InitializeObjectBase();
+    return w;
+  }
+  void write_into(std::ostream* stream) { this->Stream = stream; }
+};
+
 // One block into memory: the XML writer patches offsets by seeking back in its stream, which on
 // a file is a flush and two lseek per array (1 100 writes and 1 200 seeks a liver_probe frame);
-// in a string it costs nothing, and the piece is then written with one call.
+// in memory it costs nothing, and the piece is then written with one call. `buffer` (empty,
+// its capacity kept from the pieces before) receives the piece: the stream writes into its
+// capacity, so a frame's pieces allocate nothing once the first frame has grown it.
 template <class Writer>
-std::string piece_text(vtkDataObject* block, vtkDataCompressor* compressor, const std::string& name) {
-  auto writer = vtkSmartPointer<Writer>::New();
+void piece_bytes(vtkDataObject* block, vtkDataCompressor* compressor, const std::string& name,
+                 std::string& buffer) {
+  vtkSmartPointer<StreamWriter<Writer>> writer;
+  writer.TakeReference(StreamWriter<Writer>::make());
   writer->SetInputData(block);
   set_compressor(writer, compressor);
   // Raw appended binary: the smallest and fastest XML form ParaView and vtk read.
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
   writer->SetHeaderTypeToUInt64();  // blocks over 4 GiB stay writable
-  writer->WriteToOutputStringOn();
+  buffer.clear();
+  std::ostringstream out(std::move(buffer));
+  writer->write_into(&out);
   VtkErrorCapture errors;
   const int ok = writer->Write();
-  if (ok != 1 || writer->GetErrorCode() != vtkErrorCode::NoError || errors.any()) {
+  buffer = std::move(out).str();
+  if (ok != 1 || writer->GetErrorCode() != vtkErrorCode::NoError || errors.any() || !out) {
     std::string reason = errors.summary();
     if (reason.empty()) reason = vtk_error_code_text(writer->GetErrorCode());
     throw RunError("cannot write " + name + ": " + reason);
   }
-  return writer->GetOutputString();
 }
 
 void write_text(const std::filesystem::path& file, const std::string& text) {
@@ -122,7 +143,7 @@ void write_text(const std::filesystem::path& file, const std::string& text) {
 // The frame as vtkXMLMultiBlockDataWriter lays it out (a .vtm naming one file per block in a
 // folder of the frame's name, the same bytes in every piece), each piece written at once.
 void write_vtm(const std::filesystem::path& file, vtkMultiBlockDataSet* blocks,
-               FrameCompression compression, vtkDataCompressor* compressor) {
+               FrameCompression compression, vtkDataCompressor* compressor, std::string& buffer) {
   namespace fs = std::filesystem;
   const std::string stem = file.stem().string();
   std::error_code ec;
@@ -139,8 +160,11 @@ void write_vtm(const std::filesystem::path& file, vtkMultiBlockDataSet* blocks,
     const bool grid = vtkUnstructuredGrid::SafeDownCast(block) != nullptr;
     const std::string piece = stem + "/" + stem + "_" + std::to_string(k) + (grid ? ".vtu" : ".vtp");
     const fs::path path = file.parent_path() / piece;
-    write_text(path, grid ? piece_text<vtkXMLUnstructuredGridWriter>(block, compressor, path.string())
-                          : piece_text<vtkXMLPolyDataWriter>(block, compressor, path.string()));
+    if (grid)
+      piece_bytes<vtkXMLUnstructuredGridWriter>(block, compressor, path.string(), buffer);
+    else
+      piece_bytes<vtkXMLPolyDataWriter>(block, compressor, path.string(), buffer);
+    write_text(path, buffer);
     const char* name = blocks->GetMetaData(k)->Get(vtkCompositeDataSet::NAME());
     vtm += "    <DataSet index=\"" + std::to_string(k) + "\" name=\"" + name + "\" file=\"" + piece +
            "\"/>\n";
@@ -186,7 +210,7 @@ void VtkSeriesWriter::write_frame(int frame_index, double time,
 // last: a run killed while writing leaves only frames/.partial behind, never a half-written
 // file under a final name (issue 18 defect 8; the next run into the folder removes frames/).
 void VtkSeriesWriter::write_complete(const std::filesystem::path& relative,
-                                     vtkMultiBlockDataSet* blocks) const {
+                                     vtkMultiBlockDataSet* blocks) {
   namespace fs = std::filesystem;
   const fs::path frames = out_dir_ / kFramesDir, partial = frames / kPartialDir;
   const fs::path vtm = relative.filename(), pieces = fs::path(vtm).replace_extension();
@@ -196,7 +220,7 @@ void VtkSeriesWriter::write_complete(const std::filesystem::path& relative,
     throw RunError("cannot write " + (out_dir_ / relative).string() + ": cannot create " +
                    partial.string() + ": " + ec.message());
   compressor_->begin_frame();
-  write_vtm(partial / vtm, blocks, compression_, compressor_->get());
+  write_vtm(partial / vtm, blocks, compression_, compressor_->get(), piece_buffer_);
   if (fs::exists(partial / pieces, ec)) fs::rename(partial / pieces, frames / pieces, ec);
   if (!ec) fs::rename(partial / vtm, frames / vtm, ec);
   if (ec)

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -45,12 +46,13 @@ class VtkSeriesWriter {
  private:
   struct Entry { int index; double time; std::filesystem::path file; };
   void write_pvd() const;
-  void write_complete(const std::filesystem::path& relative, vtkMultiBlockDataSet* blocks) const;
+  void write_complete(const std::filesystem::path& relative, vtkMultiBlockDataSet* blocks);
   std::filesystem::path out_dir_;
   FrameCompression compression_;
   std::vector<Entry> entries_;
   std::unique_ptr<LevelGrids> grids_;  // each level's grid, its cells built once
   std::unique_ptr<FrameCompressor> compressor_;  // compresses the blocks that changed
+  std::string piece_buffer_;  // each piece's bytes, its capacity kept from piece to piece
 };
 
 }  // namespace mrsim
