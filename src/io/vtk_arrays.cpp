@@ -1,5 +1,7 @@
 #include "io/vtk_arrays.hpp"
 
+#include <cstring>
+
 namespace mrsim {
 
 vtkSmartPointer<vtkPoints> double_points(vtkIdType count) {
@@ -9,14 +11,29 @@ vtkSmartPointer<vtkPoints> double_points(vtkIdType count) {
   return points;
 }
 
+vtkSmartPointer<vtkPoints> deformed_points(std::span<const Vec3> rest,
+                                           std::span<const Vec3> displacement) {
+  auto points = double_points(static_cast<vtkIdType>(rest.size()));
+  // Straight into the points' double storage, without a virtual call a point.
+  double* xyz = vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0);
+  for (std::size_t i = 0; i < rest.size(); ++i) {
+    const Vec3 x = rest[i] + displacement[i];
+    xyz[3 * i] = x.x();
+    xyz[3 * i + 1] = x.y();
+    xyz[3 * i + 2] = x.z();
+  }
+  return points;
+}
+
 vtkSmartPointer<vtkDoubleArray> vector_array(const char* name, std::span<const Vec3> values) {
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(name);
   array->SetNumberOfComponents(3);
   array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    array->SetTypedTuple(static_cast<vtkIdType>(i), values[i].data());
-  }
+  // Vec3 is three contiguous doubles: one copy into VTK's (array-of-structures) storage.
+  static_assert(sizeof(Vec3) == 3 * sizeof(double));
+  if (!values.empty())
+    std::memcpy(array->GetPointer(0), values.data(), values.size() * sizeof(Vec3));
   return array;
 }
 

@@ -7,6 +7,7 @@
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
 
+#include <algorithm>
 #include <span>
 
 #include "core/vec.hpp"
@@ -15,6 +16,9 @@ namespace mrsim {
 
 /// Points in float64: float would lose the sub-micrometre displacements.
 vtkSmartPointer<vtkPoints> double_points(vtkIdType count);
+/// Points at rest + displacement (the deformed positions the frames show), as doubles.
+vtkSmartPointer<vtkPoints> deformed_points(std::span<const Vec3> rest,
+                                           std::span<const Vec3> displacement);
 
 /// A 3-component float64 array, one tuple per value.
 vtkSmartPointer<vtkDoubleArray> vector_array(const char* name, std::span<const Vec3> values);
@@ -26,9 +30,7 @@ vtkSmartPointer<ArrayT> scalar_array(const char* name, std::span<const T> values
   auto array = vtkSmartPointer<ArrayT>::New();
   array->SetName(name);
   array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    array->SetValue(static_cast<vtkIdType>(i), values[i]);
-  }
+  std::copy(values.begin(), values.end(), array->GetPointer(0));  // VTK's contiguous storage
   return array;
 }
 

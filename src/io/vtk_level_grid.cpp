@@ -14,16 +14,6 @@
 namespace mrsim {
 namespace {
 
-vtkSmartPointer<vtkPoints> deformed_points(const LevelFrameView& view) {
-  const auto& rest = view.mesh->points;
-  auto points = double_points(static_cast<vtkIdType>(rest.size()));
-  for (std::size_t i = 0; i < rest.size(); ++i) {
-    const Vec3 x = rest[i] + view.displacement[i];
-    points->SetPoint(static_cast<vtkIdType>(i), x.x(), x.y(), x.z());
-  }
-  return points;
-}
-
 void add_point_arrays(vtkPointData* data, const LevelFrameView& view) {
   data->AddArray(vector_array("displacement", view.displacement));
   data->AddArray(vector_array("velocity", view.velocity));
@@ -38,7 +28,7 @@ void add_point_arrays(vtkPointData* data, const LevelFrameView& view) {
 
 // Points, point and cell arrays and the time of a frame, on a grid that already has its cells.
 void fill_level_grid(vtkUnstructuredGrid* grid, const LevelFrameView& view, double time) {
-  grid->SetPoints(deformed_points(view));
+  grid->SetPoints(deformed_points(view.mesh->points, view.displacement));
   grid->GetPointData()->Initialize();
   add_point_arrays(grid->GetPointData(), view);
   // What the level simulates of each tet: a Threshold `simulated` >= 0.5 on every level block

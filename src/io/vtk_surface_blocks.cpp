@@ -38,15 +38,6 @@ vtkSmartPointer<vtkCellArray> triangle_cells(std::span<const TrianglePiece> piec
                           [&](vtkIdType c, int k) { return corners[c][k]; });
 }
 
-vtkSmartPointer<vtkPoints> deformed_points(const SurfaceFrameView& surface) {
-  auto points = double_points(static_cast<vtkIdType>(surface.rest.size()));
-  for (std::size_t i = 0; i < surface.rest.size(); ++i) {
-    const Vec3 x = surface.rest[i] + surface.displacement[i];
-    points->SetPoint(static_cast<vtkIdType>(i), x.x(), x.y(), x.z());
-  }
-  return points;
-}
-
 void add_surface_arrays(vtkPointData* data, const SurfaceFrameView& surface) {
   data->AddArray(vector_array("displacement", surface.displacement));
   data->AddArray(vector_array("velocity", surface.velocity));
@@ -109,7 +100,7 @@ vtkSmartPointer<vtkDoubleArray> tool_force_array(std::span<const ToolFrameView> 
 
 vtkSmartPointer<vtkPolyData> make_surface_block(const SurfaceFrameView& surface, double time) {
   auto block = vtkSmartPointer<vtkPolyData>::New();
-  block->SetPoints(deformed_points(surface));
+  block->SetPoints(deformed_points(surface.rest, surface.displacement));
   const TrianglePiece piece{surface.triangles, 0};
   block->SetPolys(triangle_cells({&piece, 1}, static_cast<vtkIdType>(surface.rest.size())));
   add_surface_arrays(block->GetPointData(), surface);
