@@ -143,7 +143,7 @@ void write_text(const std::filesystem::path& file, const std::string& text) {
 // The frame as vtkXMLMultiBlockDataWriter lays it out (a .vtm naming one file per block in a
 // folder of the frame's name, the same bytes in every piece), each piece written at once.
 void write_vtm(const std::filesystem::path& file, vtkMultiBlockDataSet* blocks,
-               FrameCompression compression, vtkDataCompressor* compressor, std::string& buffer) {
+               vtkDataCompressor* compressor, std::string& buffer) {
   namespace fs = std::filesystem;
   const std::string stem = file.stem().string();
   std::error_code ec;
@@ -151,9 +151,9 @@ void write_vtm(const std::filesystem::path& file, vtkMultiBlockDataSet* blocks,
   if (ec) throw RunError("cannot write " + file.string() + ": " + ec.message());
   std::string vtm = "<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
                     "byte_order=\"LittleEndian\" header_type=\"UInt64\"";
-  vtm += compression == FrameCompression::Lz4    ? " compressor=\"vtkLZ4DataCompressor\""
-         : compression == FrameCompression::Zlib ? " compressor=\"vtkZLibDataCompressor\""
-                                                 : "";
+  // The name VTK's own writers give it: the class readers instantiate to decompress.
+  if (compressor != nullptr)
+    vtm += std::string(" compressor=\"") + compressor->GetClassName() + "\"";
   vtm += ">\n  <vtkMultiBlockDataSet>\n";
   for (unsigned k = 0; k < blocks->GetNumberOfBlocks(); ++k) {
     vtkDataObject* block = blocks->GetBlock(k);
@@ -180,7 +180,7 @@ VtkSeriesWriter::VtkSeriesWriter(VtkSeriesWriter&&) noexcept = default;
 VtkSeriesWriter& VtkSeriesWriter::operator=(VtkSeriesWriter&&) noexcept = default;
 
 VtkSeriesWriter::VtkSeriesWriter(std::filesystem::path out_dir, FrameCompression compression)
-    : out_dir_(std::move(out_dir)), compression_(compression),
+    : out_dir_(std::move(out_dir)),
       grids_(std::make_unique<LevelGrids>()),
       compressor_(std::make_unique<FrameCompressor>(compression)) {
   // Created up front so that an unusable output folder fails the run before any step.
@@ -220,7 +220,7 @@ void VtkSeriesWriter::write_complete(const std::filesystem::path& relative,
     throw RunError("cannot write " + (out_dir_ / relative).string() + ": cannot create " +
                    partial.string() + ": " + ec.message());
   compressor_->begin_frame();
-  write_vtm(partial / vtm, blocks, compression_, compressor_->get(), piece_buffer_);
+  write_vtm(partial / vtm, blocks, compressor_->get(), piece_buffer_);
   if (fs::exists(partial / pieces, ec)) fs::rename(partial / pieces, frames / pieces, ec);
   if (!ec) fs::rename(partial / vtm, frames / vtm, ec);
   if (ec)

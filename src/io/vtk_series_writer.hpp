@@ -48,7 +48,6 @@ class VtkSeriesWriter {
   void write_pvd() const;
   void write_complete(const std::filesystem::path& relative, vtkMultiBlockDataSet* blocks);
   std::filesystem::path out_dir_;
-  FrameCompression compression_;
   std::vector<Entry> entries_;
   std::unique_ptr<LevelGrids> grids_;  // each level's grid, its cells built once
   std::unique_ptr<FrameCompressor> compressor_;  // compresses the blocks that changed
