@@ -10,6 +10,7 @@
 #include "hierarchy/ghost_force_transfer.hpp"
 #include "physics/tangent_growth.hpp"
 #include "simulation/diagnostics.hpp"
+#include "simulation/link_cache.hpp"
 #include "time/explicit_updates.hpp"
 
 namespace mrsim {
@@ -48,10 +49,12 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
           build_level_model(*meshes[l], law, is_semi_implicit(setup.integrator), held)));
     levels.push_back({meshes[l], &models_[l]->adj});
   }
-  // One locator per level, for the level links, the skin binding and the level ownership.
-  locators_.reserve(L);
-  for (int l = 0; l < L; ++l) locators_.emplace_back(*meshes[l]);
-  hierarchy_ = std::make_unique<Hierarchy>(levels, build_level_links(levels, locators_));
+  // The links and the skin binding are the hierarchy's geometry: kept between runs.
+  meshes_ = meshes;
+  const InputHash geometry = hierarchy_inputs(levels);
+  const LocatorSource locate = [this]() -> const std::vector<TetLocator>& { return locators(); };
+  hierarchy_ =
+      std::make_unique<Hierarchy>(levels, cached_level_links(levels, geometry, locate));
   lists_ = std::make_unique<StatusLists>(*hierarchy_);
   states_.resize(L);
   fixed_.resize(L);
@@ -100,8 +103,8 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   load_factors_.assign(loads_.size(), 0.0);
   if (!setup.tools.empty()) {
     Skin skin = setup.skin ? *setup.skin : boundary_skin(*meshes.back());
-    SkinBinding binding =
-        bind_skin(skin, locators_, L >= 2 ? &hierarchy_->links(L - 1).parent_tet : nullptr);
+    SkinBinding binding = cached_skin_binding(
+        skin, levels, geometry, L >= 2 ? &hierarchy_->links(L - 1).parent_tet : nullptr, locate);
     contact_ = std::make_unique<SkinContact>(std::move(skin), std::move(binding), setup.tools,
                                              setup.law.lambda + 2.0 * setup.law.mu);
   }
@@ -156,6 +159,14 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
 // After the point sets changed: Störmer–Verlet needs the force at the current state. With time
 // levels every integrator takes kick-drift steps (no saved half-kick force); one evaluation of
 // every served point gives the outputs their forces at the frame's time.
+const std::vector<TetLocator>& HierarchicalSimulation::locators() const {
+  if (locators_.empty()) {
+    locators_.reserve(meshes_.size());
+    for (const TetMesh* mesh : meshes_) locators_.emplace_back(*mesh);
+  }
+  return locators_;
+}
+
 void HierarchicalSimulation::restart_integrator() {
   if (time_levels_)
     compute_forces();

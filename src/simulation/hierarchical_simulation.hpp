@@ -67,9 +67,10 @@ class HierarchicalSimulation {
   const PointState& state(int l) const { return states_[l]; }
   PointState& state(int l) { return states_[l]; }
   const Hierarchy& hierarchy() const { return *hierarchy_; }
-  /// One point locator per level (static; built for the level links and the skin binding, kept
-  /// for the frames' level ownership).
-  const std::vector<TetLocator>& locators() const { return locators_; }
+  /// One point locator per level (static), built when first asked for: for the level links
+  /// and the skin binding when the result cache does not hold them (simulation/link_cache.hpp),
+  /// and for the frames' level ownership.
+  const std::vector<TetLocator>& locators() const;
   /// The calibration fit of each level (empty without object.calibration).
   const std::vector<LevelCalibration>& calibration() const { return calibration_; }
   const StatusLists& lists() const { return *lists_; }
@@ -217,7 +218,8 @@ class HierarchicalSimulation {
   std::vector<std::unique_ptr<LevelModel>> models_;
   std::vector<LevelCalibration> calibration_;
   std::vector<PointState> states_;
-  std::vector<TetLocator> locators_;
+  std::vector<const TetMesh*> meshes_;
+  mutable std::vector<TetLocator> locators_;  // empty until locators() is first called
   std::unique_ptr<Hierarchy> hierarchy_;
   std::unique_ptr<StatusLists> lists_;
   std::vector<std::unique_ptr<LevelForceField>> forces_;

@@ -3,9 +3,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <stdexcept>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -56,6 +59,94 @@ std::filesystem::path result_cache_dir(std::string_view kind) {
   return {};
 }
 
+namespace {
+
+// A folder keyed by the build grows with every rebuild: past kMostFiles results or kMostBytes
+// the oldest go, down to three quarters of each. A result that goes is only computed again.
+constexpr std::size_t kMostFiles = 512;
+constexpr std::uintmax_t kMostBytes = std::uintmax_t{256} << 20;
+
+bool is_result(const std::filesystem::path& p) {
+  return p.extension() == ".json" || p.extension() == ".bin";
+}
+
+void prune(const std::filesystem::path& dir) {
+  std::error_code ec;
+  struct Entry {
+    std::filesystem::file_time_type written;
+    std::filesystem::path path;
+    std::uintmax_t size;
+    bool operator<(const Entry& o) const { return written < o.written; }
+  };
+  std::vector<Entry> files;
+  std::uintmax_t bytes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+    if (entry.is_regular_file(ec) && is_result(entry.path())) {
+      files.push_back({entry.last_write_time(ec), entry.path(), entry.file_size(ec)});
+      bytes += files.back().size;
+    }
+  if (ec || (files.size() <= kMostFiles && bytes <= kMostBytes)) return;
+  std::sort(files.begin(), files.end());
+  std::size_t left = files.size();
+  for (const Entry& f : files) {
+    if (left <= kMostFiles * 3 / 4 && bytes <= kMostBytes * 3 / 4) break;
+    if (std::filesystem::remove(f.path, ec)) bytes -= f.size;
+    --left;
+  }
+}
+
+// `bytes` as `file`: written under a name unique to the process, then renamed, so that
+// concurrent runs of a sweep never see a torn file; then the folder is pruned.
+void write_atomically(const std::filesystem::path& file, std::string_view bytes,
+                      std::string_view what) {
+  if (file.empty()) return;
+  const std::filesystem::path dir = file.parent_path();
+  const std::filesystem::path tmp =
+      file.string() + "." + std::to_string(static_cast<long>(::getpid())) + ".tmp";
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) ec = std::make_error_code(std::errc::io_error);
+  }
+  if (!ec) std::filesystem::rename(tmp, file, ec);
+  if (!ec) prune(dir);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    warn("could not write the " + std::string(what) + " cache in " + dir.string() +
+         " (set MRSIM_CACHE_DIR to a writable folder to keep it); the run goes on");
+  }
+}
+
+void ignored(std::string_view what, const std::filesystem::path& file, const char* why) {
+  warn("ignored the " + std::string(what) + " cache " + file.string() + " (" + why +
+       "); computing it again");
+}
+
+// The binary files' header: a magic word (it names the layout's version), the key (16 hex
+// digits), the payload's size and checksum.
+constexpr char kMagic[8] = {'M', 'R', 'S', 'I', 'M', 'B', 'C', '1'};
+constexpr std::size_t kKeySize = 16;
+constexpr std::size_t kHeaderSize = sizeof kMagic + kKeySize + 2 * sizeof(std::uint64_t);
+
+// Catches a damaged payload (a torn copy, a flipped bit), eight bytes at a time.
+std::uint64_t checksum(std::string_view bytes) {
+  std::uint64_t h = 14695981039346656037ull;
+  std::size_t k = 0;
+  for (; k + 8 <= bytes.size(); k += 8) {
+    std::uint64_t w;
+    std::memcpy(&w, bytes.data() + k, 8);
+    h = (h ^ w) * 1099511628211ull;
+    h ^= h >> 29;
+  }
+  for (; k < bytes.size(); ++k) h = (h ^ static_cast<unsigned char>(bytes[k])) * 1099511628211ull;
+  return h;
+}
+
+}  // namespace
+
 bool read_cached_result(const std::filesystem::path& file, const std::string& key,
                         std::string_view what,
                         const std::function<void(const nlohmann::json&)>& take) {
@@ -67,54 +158,61 @@ bool read_cached_result(const std::filesystem::path& file, const std::string& ke
     take(j);
     return true;
   } catch (const std::exception& e) {
-    warn("ignored the " + std::string(what) + " cache " + file.string() + " (" + e.what() +
-         "); computing it again");
+    ignored(what, file, e.what());
     return false;
   }
 }
-
-namespace {
-
-// A folder keyed by the build grows with every rebuild: past kMostFiles results the oldest go,
-// down to three quarters of it. A result that goes is only computed again.
-constexpr std::size_t kMostFiles = 512;
-
-void prune(const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::vector<std::pair<std::filesystem::file_time_type, std::filesystem::path>> files;
-  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-    if (entry.is_regular_file(ec) && entry.path().extension() == ".json")
-      files.emplace_back(entry.last_write_time(ec), entry.path());
-  if (ec || files.size() <= kMostFiles) return;
-  std::sort(files.begin(), files.end());
-  for (std::size_t k = 0; k + kMostFiles * 3 / 4 < files.size(); ++k)
-    std::filesystem::remove(files[k].second, ec);
-}
-
-}  // namespace
 
 void write_cached_result(const std::filesystem::path& file, const std::string& key,
                          nlohmann::json result, std::string_view what) {
   if (file.empty()) return;
   result["key"] = key;
-  const std::filesystem::path dir = file.parent_path();
-  const std::filesystem::path tmp =
-      file.string() + "." + std::to_string(static_cast<long>(::getpid())) + ".tmp";
+  write_atomically(file, result.dump(1) + '\n', what);
+}
+
+bool read_cached_bytes(const std::filesystem::path& file, const std::string& key,
+                       std::string_view what,
+                       const std::function<void(std::string_view payload)>& take) {
   std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  {
-    std::ofstream out(tmp);
-    out << result.dump(1) << '\n';
-    out.close();
-    if (!out) ec = std::make_error_code(std::errc::io_error);
+  if (file.empty() || !std::filesystem::is_regular_file(file, ec)) return false;
+  const std::string bytes = read_text_if_any(file);
+  const std::string_view all(bytes);
+  if (all.size() < kHeaderSize || all.substr(0, sizeof kMagic) != std::string_view(kMagic, 8)) {
+    ignored(what, file, "not a result of this version");
+    return false;
   }
-  if (!ec) std::filesystem::rename(tmp, file, ec);
-  if (!ec) prune(dir);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    warn("could not write the " + std::string(what) + " cache in " + dir.string() +
-         " (set MRSIM_CACHE_DIR to a writable folder to keep it); the run goes on");
+  if (all.substr(sizeof kMagic, kKeySize) != key) {
+    ignored(what, file, "another key");
+    return false;
   }
+  std::uint64_t size, sum;
+  std::memcpy(&size, all.data() + sizeof kMagic + kKeySize, 8);
+  std::memcpy(&sum, all.data() + sizeof kMagic + kKeySize + 8, 8);
+  const std::string_view payload = all.substr(kHeaderSize);
+  if (payload.size() != size || checksum(payload) != sum) {
+    ignored(what, file, "damaged");
+    return false;
+  }
+  try {
+    take(payload);
+    return true;
+  } catch (const std::exception& e) {
+    ignored(what, file, e.what());
+    return false;
+  }
+}
+
+void write_cached_bytes(const std::filesystem::path& file, const std::string& key,
+                        std::string_view payload, std::string_view what) {
+  if (file.empty()) return;
+  if (key.size() != kKeySize) throw std::logic_error("a result cache key is 16 hex digits");
+  std::string bytes(kMagic, sizeof kMagic);
+  bytes += key;
+  const std::uint64_t size = payload.size(), sum = checksum(payload);
+  bytes.append(reinterpret_cast<const char*>(&size), 8);
+  bytes.append(reinterpret_cast<const char*>(&sum), 8);
+  bytes += payload;
+  write_atomically(file, bytes, what);
 }
 
 }  // namespace mrsim

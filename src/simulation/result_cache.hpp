@@ -3,8 +3,9 @@
 // calibration, the levels' spectra) are kept between runs, so that sweeps and repeated runs of
 // one hierarchy pay them once. One JSON file per result under $MRSIM_CACHE_DIR/<kind>/ (default
 // $XDG_CACHE_HOME/mrsim/<kind>/, else ~/.cache/mrsim/<kind>/), named by a hash of everything
-// the computation reads; at most 512 files per kind, the oldest going first. Deleting the
-// folder is always safe: the next run computes again.
+// the computation reads; at most 512 files and 256 MiB per kind, the oldest going first.
+// Deleting the folder is always safe: the next run computes again. Results too large for JSON
+// (the hierarchy's links, simulation/link_cache.hpp) are kept in binary, with a checksum.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -50,5 +51,17 @@ bool read_cached_result(const std::filesystem::path& file, const std::string& ke
 /// unique to the process, then renamed: concurrent runs of a sweep never see a torn file.
 void write_cached_result(const std::filesystem::path& file, const std::string& key,
                          nlohmann::json result, std::string_view what);
+
+/// The binary form of read_cached_result: `file` holds a header (a magic word, `key`, the
+/// payload's size and checksum) and the payload, which `take` gets when all of it checks. A
+/// damaged file (short, another key or checksum, or `take` throwing on what it reads) is
+/// reported by a warning naming `what`, ignored, and false returned; an absent one silently.
+bool read_cached_bytes(const std::filesystem::path& file, const std::string& key,
+                       std::string_view what,
+                       const std::function<void(std::string_view payload)>& take);
+
+/// Stores `payload` under `key` as `file`, as write_cached_result does (best effort, atomic).
+void write_cached_bytes(const std::filesystem::path& file, const std::string& key,
+                        std::string_view payload, std::string_view what);
 
 }  // namespace mrsim

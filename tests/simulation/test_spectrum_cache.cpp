@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -11,42 +12,13 @@
 #include <fstream>
 
 #include "mesh/box_mesh.hpp"
+#include "simulation/cache_folder.hpp"
 #include "simulation/result_cache.hpp"
 #include "simulation/spectrum_cache.hpp"
 
 using namespace mrsim;
 
 namespace {
-
-// MRSIM_CACHE_DIR in a fresh folder of its own for the test's life.
-class CacheFolder {
- public:
-  CacheFolder()
-      : dir_(std::filesystem::path(::testing::TempDir()) /
-             ("mrsim_spectra_" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(dir_);
-    if (const char* old = std::getenv("MRSIM_CACHE_DIR")) saved_ = old;
-    ::setenv("MRSIM_CACHE_DIR", dir_.c_str(), 1);
-  }
-  ~CacheFolder() {
-    std::filesystem::remove_all(dir_);
-    if (saved_.empty())
-      ::unsetenv("MRSIM_CACHE_DIR");
-    else
-      ::setenv("MRSIM_CACHE_DIR", saved_.c_str(), 1);
-  }
-  std::vector<std::filesystem::path> files() const {
-    std::vector<std::filesystem::path> out;
-    std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator(dir_ / "spectra", ec))
-      out.push_back(e.path());
-    return out;
-  }
-
- private:
-  std::filesystem::path dir_;
-  std::string saved_;
-};
 
 TetMesh box() { return make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.03, 0.02), 5, 2, 2); }
 
@@ -69,12 +41,12 @@ bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; 
 }  // namespace
 
 TEST(SpectrumCache, ASecondBuildReadsTheSpectraAndIsTheSameModel) {
-  CacheFolder folder;
+  CacheFolder folder("spectra");
   const TetMesh mesh = box();
   bool reused = true;
   const LevelModel first = cached_level_model(mesh, law(), false, held(mesh), &reused);
   EXPECT_FALSE(reused);
-  ASSERT_EQ(folder.files().size(), 1u);
+  ASSERT_EQ(folder.files("spectra").size(), 1u);
   const LevelModel second = cached_level_model(mesh, law(), false, held(mesh), &reused);
   EXPECT_TRUE(reused);
   EXPECT_TRUE(second.K.empty());  // Green–Lagrange, explicit: nothing else reads K
@@ -118,12 +90,12 @@ TEST(SpectrumCache, EveryInputChangesTheKey) {
 }
 
 TEST(SpectrumCache, ADamagedFileIsSaidIgnoredAndRewritten) {
-  CacheFolder folder;
+  CacheFolder folder("spectra");
   const TetMesh mesh = box();
   const LevelModel first = cached_level_model(mesh, law(), false, held(mesh));
-  ASSERT_EQ(folder.files().size(), 1u);
+  ASSERT_EQ(folder.files("spectra").size(), 1u);
   for (const char* damage : {"{\"key\": ", "{\"key\": \"0000000000000000\"}"}) {
-    { std::ofstream(folder.files()[0]) << damage; }
+    { std::ofstream(folder.files("spectra")[0]) << damage; }
     ::testing::internal::CaptureStderr();
     bool reused = true;
     const LevelModel m = cached_level_model(mesh, law(), false, held(mesh), &reused);
@@ -156,7 +128,7 @@ TEST(SpectrumCache, AFolderThatCannotBeWrittenCostsAWarning) {
 
 // A folder keyed by the build would grow with every rebuild: past 512 results the oldest go.
 TEST(ResultCache, PastTheLimitTheOldestResultsGo) {
-  CacheFolder folder;
+  CacheFolder folder("spectra");
   const std::filesystem::path dir = result_cache_dir("spectra");
   std::filesystem::create_directories(dir);
   const auto now = std::filesystem::file_time_type::clock::now();
@@ -167,7 +139,7 @@ TEST(ResultCache, PastTheLimitTheOldestResultsGo) {
   }
   const TetMesh mesh = box();
   cached_level_model(mesh, law(), false, held(mesh));
-  const auto files = folder.files();
+  const auto files = folder.files("spectra");
   EXPECT_EQ(files.size(), 384u);
   bool newest = false, oldest = false;
   for (const auto& f : files) {
@@ -179,4 +151,28 @@ TEST(ResultCache, PastTheLimitTheOldestResultsGo) {
   bool reused = false;
   cached_level_model(mesh, law(), false, held(mesh), &reused);
   EXPECT_TRUE(reused);
+}
+
+// Large binary results (the hierarchy's links) count by size too: past 256 MiB in a folder the
+// oldest go, down to three quarters of it. Sparse files: their size costs no disk.
+TEST(ResultCache, PastTheByteLimitTheOldestResultsGo) {
+  CacheFolder folder("spectra");
+  const std::filesystem::path dir = result_cache_dir("spectra");
+  std::filesystem::create_directories(dir);
+  const auto now = std::filesystem::file_time_type::clock::now();
+  for (int k = 0; k < 3; ++k) {
+    const std::filesystem::path f = dir / ("big_" + std::to_string(k) + ".bin");
+    std::ofstream(f).close();
+    std::filesystem::resize_file(f, std::uintmax_t{100} << 20);
+    std::filesystem::last_write_time(f, now - std::chrono::hours(10 - k));
+  }
+  write_cached_bytes(dir / "small.bin", "0123456789abcdef", "payload", "test");
+  std::vector<std::string> left;
+  for (const auto& f : folder.files("spectra")) left.push_back(f.filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"big_2.bin", "small.bin"}));
+  bool read = false;
+  EXPECT_TRUE(read_cached_bytes(dir / "small.bin", "0123456789abcdef", "test",
+                                [&](std::string_view p) { read = p == "payload"; }));
+  EXPECT_TRUE(read);
 }
