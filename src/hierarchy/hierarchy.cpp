@@ -46,7 +46,7 @@ void Hierarchy::restore(std::vector<HierarchyCounters> counters) {
   }
   touched_.clear();
   for (int l = 0; l < num_levels(); ++l)
-    for (int p = 0; p < num_points(l); ++p) touched_.emplace_back(l, p);
+    for (int p = 0; p < num_points(l); ++p) touch(l, p);
 }
 
 bool Hierarchy::can_split(int l, int p) const {
@@ -70,7 +70,7 @@ void Hierarchy::ensure_resolvable(int l, int g, std::vector<std::pair<int, int>>
   for (int q : levels_[l - 1].mesh->tets[t]) {
     if (state(l - 1, q) != NodeState::Inactive) continue;
     flags_[l - 1].support[q] = 1;
-    touched_.emplace_back(l - 1, q);
+    touch(l - 1, q);
     if (woken) woken->emplace_back(l - 1, q);
     ensure_resolvable(l - 1, q, woken);
   }
@@ -79,17 +79,17 @@ void Hierarchy::ensure_resolvable(int l, int g, std::vector<std::pair<int, int>>
 std::vector<std::pair<int, int>> Hierarchy::split(int l, int p) {
   std::vector<std::pair<int, int>> woken;
   flags_[l].subdivided[p] = 1;
-  touched_.emplace_back(l, p);
+  touch(l, p);
   Flags& fine = flags_[l + 1];
   for (int a : links_[l].active_set.row(p)) {
     if (state(l + 1, a) == NodeState::Inactive) woken.emplace_back(l + 1, a);
     ++fine.active_ref[a];
-    touched_.emplace_back(l + 1, a);
+    touch(l + 1, a);
   }
   for (int g : links_[l].ghost_set.row(p)) {
     if (state(l + 1, g) == NodeState::Inactive) woken.emplace_back(l + 1, g);
     ++fine.ghost_ref[g];
-    touched_.emplace_back(l + 1, g);
+    touch(l + 1, g);
     if (state(l + 1, g) == NodeState::GhostIface) ensure_resolvable(l + 1, g, &woken);
   }
   return woken;
@@ -97,15 +97,15 @@ std::vector<std::pair<int, int>> Hierarchy::split(int l, int p) {
 
 void Hierarchy::merge(int l, int p) {
   flags_[l].subdivided[p] = 0;
-  touched_.emplace_back(l, p);
+  touch(l, p);
   Flags& fine = flags_[l + 1];
   for (int a : links_[l].active_set.row(p)) {
     --fine.active_ref[a];
-    touched_.emplace_back(l + 1, a);
+    touch(l + 1, a);
   }
   for (int g : links_[l].ghost_set.row(p)) {
     --fine.ghost_ref[g];
-    touched_.emplace_back(l + 1, g);
+    touch(l + 1, g);
   }
   // Points of the former sets that stay needed as ghosts must stay resolvable, and a point
   // that fell inactive while a finer interface ghost still interpolates from it stays as
@@ -140,7 +140,7 @@ int Hierarchy::collect_garbage() {
     for (size_t p = 0; p < before[l].size(); ++p)
       if (before[l][p] != flags_[l].support[p]) {
         released += before[l][p];
-        touched_.emplace_back(static_cast<int>(l), static_cast<int>(p));
+        touch(static_cast<int>(l), static_cast<int>(p));
       }
   return released;
 }

@@ -74,9 +74,16 @@ class Hierarchy {
   std::vector<std::pair<int, int>> take_touched() { return std::exchange(touched_, {}); }
   /// Has a status possibly changed since the last take_touched()?
   bool has_touched() const { return !touched_.empty(); }
+  /// Counts every possible status change since construction: equal counts, equal statuses
+  /// (what the frames' level ownership checks before looking at every tet again).
+  std::uint64_t status_changes() const { return status_changes_; }
 
  private:
   using Flags = HierarchyCounters;
+  void touch(int level, int point) {
+    touched_.emplace_back(level, point);
+    ++status_changes_;
+  }
   void ensure_resolvable(int level, int ghost, std::vector<std::pair<int, int>>* woken);
   void check_point(int l, int p, std::vector<std::string>& out) const;
 
@@ -84,6 +91,7 @@ class Hierarchy {
   std::vector<LevelLinks> links_;
   std::vector<Flags> flags_;
   std::vector<std::pair<int, int>> touched_;
+  std::uint64_t status_changes_ = 0;
 };
 
 const char* node_state_name(NodeState s);

@@ -113,6 +113,11 @@ LevelOwnership::LevelOwnership(const Hierarchy& h, const std::vector<TetLocator>
 }
 
 bool LevelOwnership::observe(const Hierarchy& h) {
+  // No status changed since the last look: neither did any tet's coverage.
+  if (!covered_.empty() && observed_ == &h && observed_changes_ == h.status_changes())
+    return false;
+  observed_ = &h;
+  observed_changes_ = h.status_changes();
   bool changed = covered_.empty();
   covered_.resize(levels_);
   for (int m = 0; m < levels_; ++m) {

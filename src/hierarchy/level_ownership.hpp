@@ -25,7 +25,8 @@ class LevelOwnership {
   LevelOwnership(const Hierarchy& h, const std::vector<TetLocator>& locators);
 
   /// Takes the hierarchy's current statuses: which tets of each level have no inactive vertex.
-  /// O(tets of all levels); call it before shares() whenever the statuses may have changed.
+  /// O(tets of all levels) when `h` changed a status since the last call (or is another
+  /// hierarchy), O(1) otherwise; call it before shares() whenever the statuses may have changed.
   /// Returns whether any tet's coverage changed since the last call (true on the first): the
   /// shares of every level are the same as last time when it did not, so a frame without a
   /// topology change need not ask for them again.
@@ -45,6 +46,8 @@ class LevelOwnership {
   // takes whatever no finer level claims, so where a sample lies in it is never asked).
   std::vector<std::vector<std::int32_t>> where_;
   std::vector<std::vector<std::uint8_t>> covered_;  // [level][tet]: no inactive vertex (observe)
+  const Hierarchy* observed_ = nullptr;  // and its Hierarchy::status_changes() then
+  std::uint64_t observed_changes_ = 0;
 };
 
 }  // namespace mrsim

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 
 #include "hierarchy/level_ownership.hpp"
 #include "hierarchy_fixture.hpp"
@@ -72,6 +73,36 @@ TEST(LevelOwnership, SharesCoverTheObjectFollowSplitsAndObserveSaysWhenTheyChang
   const Shares back = shares_of(own, 3);
   EXPECT_EQ(back.share, start.share);
   EXPECT_EQ(back.owner, start.owner);
+
+  // Observing skips the tets only while the hierarchy changed no status: a split and its merge
+  // between two observations are changes (looked at again, found the same coverage) ...
+  const std::uint64_t changes = h.status_changes();
+  int p = 0;
+  while (!h.can_split(0, p)) ++p;
+  h.split(0, p);
+  EXPECT_GT(h.status_changes(), changes);
+  h.merge(0, p);
+  h.collect_garbage();
+  EXPECT_FALSE(own.observe(h));
+  EXPECT_EQ(shares_of(own, 3).share, start.share);
+  // ... and another hierarchy, even one with as many changes, is looked at too: two restored
+  // from other counters have counted one change per point each.
+  Hierarchy right = f.make(), rest = f.make();
+  for (int q = 0; q < right.num_points(0); ++q)
+    if (f.meshes[0].points[q].x() > 0.05 && right.can_split(0, q)) right.split(0, q);
+  std::vector<HierarchyCounters> split_right, none;
+  for (int l = 0; l < 3; ++l) {
+    split_right.push_back(right.counters(l));
+    none.push_back(rest.counters(l));
+  }
+  Hierarchy a = f.make(), b = f.make();
+  a.restore(split_right);
+  b.restore(none);
+  ASSERT_EQ(a.status_changes(), b.status_changes());
+  EXPECT_FALSE(own.observe(b));  // looked at: the start's coverage, as h's
+  EXPECT_EQ(shares_of(own, 3).share, start.share);
+  EXPECT_TRUE(own.observe(a));
+  EXPECT_NE(shares_of(own, 3).share, start.share);
 }
 
 // The frames build the ownership with the simulation's own locators; the shares are those of
