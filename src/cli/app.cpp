@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <new>
@@ -59,6 +60,14 @@ int finished(const RunSummary& s) {
 
 // A run with progress on stderr and clean interruption: `run` gets the options, the summary
 // line says what ran (`what`) and where its outputs are.
+// " (2.3x real time)": simulated seconds per wall second, the figure a real-time user looks for.
+std::string real_time(const RunSummary& s) {
+  if (s.wall_time <= 0 || s.simulated_time <= 0) return "";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, " (%.3gx real time)", real_time_factor(s));
+  return buf;
+}
+
 template <class Run>
 int run_reporting(const CommonArgs& a, const std::string& what, const std::string& dir, Run run) {
   ProgressReporter progress(!a.quiet);
@@ -69,7 +78,7 @@ int run_reporting(const CommonArgs& a, const std::string& what, const std::strin
     const RunSummary s = run(options);
     progress.finish();
     info("mrsim: " + what + std::to_string(s.frames) + " frames, " + std::to_string(s.steps) +
-         " steps in " + std::to_string(s.wall_time) + " s; outputs in " + dir);
+         " steps in " + std::to_string(s.wall_time) + " s" + real_time(s) + "; outputs in " + dir);
     return finished(s);
   } catch (...) {
     progress.finish();

@@ -8,8 +8,8 @@
 
 namespace mrsim {
 
-/// True for `wall_time` (any key whose name contains "wall") and for `mrsim_version` and
-/// `git_revision`, as in log.h5.
+/// True for `wall_time` (any key whose name contains "wall") and `real_time_factor`, and for
+/// `mrsim_version`, `git_revision` and `force_kernel`, as in log.h5.
 bool is_ignored_summary_key(const std::string& key);
 
 JsonDiff diff_summaries(const nlohmann::json& a, const nlohmann::json& b,

@@ -449,9 +449,11 @@ nlohmann::json summary_json(const Scenario& sc, const HierarchicalSimulation& si
   j["git_revision"] = kGitRevision;
   j["force_kernel"] = green_kernel_name();
   j["frames"] = st.frames_done;
-  j["simulated_time"] = st.frames_done * sc.time.frame_dt;
+  j["simulated_time"] = sum.simulated_time;
   j["steps"] = sum.steps;
   j["wall_time"] = sum.wall_time;
+  // Simulated seconds per wall second, set-up included: what a real-time user checks first.
+  j["real_time_factor"] = real_time_factor(sum);
   // The frames' wall time per task and its shares (docs/output.md), as the thesis reports them.
   const double frames_wall = std::accumulate(parts.begin(), parts.end(), 0.0);
   for (std::size_t k = 0; k < kTaskCount; ++k) {
@@ -491,6 +493,7 @@ void write_summary(const Scenario& sc, const HierarchicalSimulation& sim, const 
                    Clock::time_point t0, double peak_tool_force, const TaskClock::Parts& parts,
                    RunSummary& sum) {
   sum.frames = st.frames_done;
+  sum.simulated_time = st.frames_done * sc.time.frame_dt;
   sum.wall_time = seconds_since(t0);
   write_json_file(sc.output.dir / "summary.json",
                   summary_json(sc, sim, st, sum, peak_tool_force, parts));

@@ -25,9 +25,15 @@ struct RunOptions {
 struct RunSummary {
   int frames = 0;
   std::int64_t steps = 0;
+  double simulated_time = 0;  // s, frames × time.frame_dt
   double wall_time = 0;
   int interrupted_by = 0;  // SIGINT / SIGTERM that stopped the run after a whole frame, or 0
 };
+
+/// Simulated seconds per wall second of the whole run (set-up included); 0 before any time.
+inline double real_time_factor(const RunSummary& s) {
+  return s.wall_time > 0 ? s.simulated_time / s.wall_time : 0.0;
+}
 
 RunSummary run_scenario(const Scenario& scenario, const RunOptions& options = {});
 

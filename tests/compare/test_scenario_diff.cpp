@@ -80,6 +80,7 @@ TEST(SummaryDiff, IgnoresWallTimesAndBuild) {
                             {"force_evaluations", {100, 200}}};
   nlohmann::json b = a;
   b["wall_time"] = 9.0;
+  b["real_time_factor"] = 0.2;  // a time too: only in b, or another value, is no difference
   b["mrsim_version"] = "0.2.0";
   b["force_kernel"] = "avx512";  // another machine: the same results
   EXPECT_TRUE(diff_summaries(a, b, {}).differences.empty());
@@ -88,6 +89,7 @@ TEST(SummaryDiff, IgnoresWallTimesAndBuild) {
   ASSERT_EQ(d.differences.size(), 1u);
   EXPECT_EQ(d.differences[0].path, "force_evaluations.1");
   EXPECT_TRUE(is_ignored_summary_key("wall_time"));
+  EXPECT_TRUE(is_ignored_summary_key("real_time_factor"));
   EXPECT_FALSE(is_ignored_summary_key("frames"));
 }
 

@@ -112,6 +112,24 @@ def test_adapted_substeps(binary, scenario, tmp):
     check("substeps" in kinds, "an event 'substeps' in log.h5")
 
 
+def test_real_time_factor(binary, scenario, tmp):
+    """The pace a real-time user looks for: simulated seconds per wall second, on the progress
+    lines, on the last line and in summary.json (simulated_time / wall_time)."""
+    out = os.path.join(tmp, "pace")
+    r = run(binary, "run", scenario, "-o", out, "--set", "time.duration=0.1")
+    lines = r.stderr.strip().splitlines()
+    check(r.returncode == 0 and lines, "the run ends (exit %d)" % r.returncode)
+    progress = [l for l in lines if l.startswith("progress:")]
+    check(progress and all("x real time" in l for l in progress),
+          "every progress line gives the pace: " + (progress[-1] if progress else r.stderr[-200:]))
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    factor = summary.get("real_time_factor", -1)
+    check(factor > 0 and abs(factor - summary["simulated_time"] / summary["wall_time"]) <= 1e-9 * factor,
+          "summary.json real_time_factor = simulated_time / wall_time (%r)" % factor)
+    check(lines[-1].startswith("mrsim: ") and ("(%.3gx real time)" % factor) in lines[-1],
+          "the last line says it: " + lines[-1])
+
+
 def test_divergence(binary, scenario, tmp):
     out = os.path.join(tmp, "diverged")
     r = run(binary, "run", scenario, "-o", out, "--set", "time.substeps=4",
@@ -456,6 +474,7 @@ def main():
         test_revision_is_the_built_one(args.binary, args.source)
         test_divergence(args.binary, scenario, tmp)
         test_adapted_substeps(args.binary, scenario, tmp)
+        test_real_time_factor(args.binary, scenario, tmp)
         test_computed_substeps(args.binary, scenario, tmp)
         test_threads_bit_identical(args.binary, scenario, tmp, 0.1, (1, 5))
         scenarios = os.path.join(args.source, "scenarios")
