@@ -8,7 +8,7 @@ summary.json move with it.
 The table has a header row and the columns `case`, `status` (done, failed, pending),
 `exit_code`, `message`, one `param:<key.path>` column per varied parameter, then the figures
 `peak_tool_force`, `max_displacement`, `final_active_L0`, `final_active_L1`, …, `wall_time`,
-`force_evaluations`, `steps`, `splits`, `merges`.
+`real_time_factor`, `force_evaluations`, `steps`, `splits`, `merges`.
 
 For each parameter, `sweep_<key.path>.png` has one small plot per figure against that
 parameter. Cases that differ in the other parameters are separate series, labelled by their
@@ -39,6 +39,7 @@ REQUIRED = ("case", "status")
 FIGURES = (("peak_tool_force", "peak tool force (N)"),
            ("max_displacement", "max displacement (m)"),
            ("wall_time", "wall time (s)"),
+           ("real_time_factor", "real-time factor (simulated s / wall s)"),
            ("force_evaluations", "force evaluations"))
 ACTIVE = re.compile(r"^final_active_L(\d+)$")
 

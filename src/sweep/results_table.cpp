@@ -79,7 +79,7 @@ std::string header(const std::vector<std::string>& keys, std::size_t levels) {
   for (const auto& key : keys) h += "," + csv_field("param:" + key);
   h += ",peak_tool_force,max_displacement";
   for (std::size_t l = 0; l < levels; ++l) h += ",final_active_L" + std::to_string(l);
-  return h + ",wall_time,force_evaluations,steps,splits,merges" + kEnd;
+  return h + ",wall_time,real_time_factor,force_evaluations,steps,splits,merges" + kEnd;
 }
 
 std::string line(const Row& row, const SweepCase& c, std::size_t levels) {
@@ -90,7 +90,8 @@ std::string line(const Row& row, const SweepCase& c, std::size_t levels) {
   const json& s = row.summary;
   l += "," + number_cell(s, "peak_tool_force") + "," + number_cell(s, "max_displacement");
   for (std::size_t k = 0; k < levels; ++k) l += "," + active_cell(s, k);
-  l += "," + number_cell(s, "wall_time") + "," + evaluations_cell(s);
+  l += "," + number_cell(s, "wall_time") + "," + number_cell(s, "real_time_factor") + "," +
+       evaluations_cell(s);
   for (const char* key : {"steps", "splits", "merges"}) l += "," + number_cell(s, key);
   return l + kEnd;
 }

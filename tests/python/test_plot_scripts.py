@@ -268,7 +268,8 @@ def test_sweep_fixture(source, ps, tmp):
                         "material.lambda")
     axes = {ax.get_title(): ax for ax in fig.axes if ax.get_visible()}
     check("peak tool force (N)" in axes and "final active points, level 3" in axes
-          and len(axes) == 8, "lambda figure: 8 plots %s" % sorted(axes))
+          and "real-time factor (simulated s / wall s)" in axes and len(axes) == 9,
+          "lambda figure: 9 plots %s" % sorted(axes))
     check({ax.get_xlabel() for ax in axes.values()} == {"material.lambda (Pa)"}
           and ps.axis_label("material.damping.psi") == "material.damping.psi (Pa·s)",
           "x axes carry the parameter's unit: %s" % {ax.get_xlabel() for ax in axes.values()})

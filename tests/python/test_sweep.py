@@ -53,6 +53,7 @@ def check_row_figures(row, folder):
     summary = json.load(open(os.path.join(folder, row["case"], "summary.json")))
     ok = (same_number(row["max_displacement"], summary["max_displacement"])
           and same_number(row["wall_time"], summary["wall_time"])
+          and same_number(row["real_time_factor"], summary["real_time_factor"])
           and int(row["force_evaluations"]) == sum(summary["force_evaluations"])
           and int(row["steps"]) == summary["steps"]
           and int(row["final_active_L0"]) == summary["final_active"][0]
@@ -72,7 +73,8 @@ def test_full_sweep(binary, tmp, sweep):
     columns, rows = read_rows(os.path.join(out, "results.csv"))
     check(columns[:6] == ["case", "status", "exit_code", "message", "param:material.damping.psi",
                           "param:time.substeps"], "results.csv columns: %s" % columns[:6])
-    check(columns[-5:] == ["wall_time", "force_evaluations", "steps", "splits", "merges"],
+    check(columns[-6:] == ["wall_time", "real_time_factor", "force_evaluations", "steps", "splits",
+                           "merges"],
           "results.csv ends with the work counters")
     check(len(rows) == 4, "results.csv has 4 rows")
     params = [(r["param:material.damping.psi"], r["param:time.substeps"]) for r in rows]

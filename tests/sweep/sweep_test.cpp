@@ -225,7 +225,8 @@ TEST(ResultsTable, RowsFromFakeCaseFolders) {
   write_status(case_folder(dir, 0), {0, "", 2.0});
   write(case_folder(dir, 0) / "summary.json",
         R"({"peak_tool_force": null, "max_displacement": 0.0058868, "final_active": [9, 4],
-            "wall_time": 0.79, "force_evaluations": [100, 28], "steps": 1024, "splits": 3,
+            "wall_time": 0.79, "real_time_factor": 2.5, "force_evaluations": [100, 28],
+            "steps": 1024, "splits": 3,
             "merges": 1})");
   fs::create_directories(case_folder(dir, 1));
   write_status(case_folder(dir, 1), {1, "diverged at frame 6, \"badly\"", 0.4});
@@ -241,12 +242,13 @@ TEST(ResultsTable, RowsFromFakeCaseFolders) {
   ASSERT_EQ(lines.size(), 6u);
   EXPECT_EQ(lines[0],
             "case,status,exit_code,message,param:a,peak_tool_force,max_displacement,"
-            "final_active_L0,final_active_L1,wall_time,force_evaluations,steps,splits,merges");
-  EXPECT_EQ(lines[1], "case_0000,done,0,,50000,,0.0058868,9,4,0.79,128,1024,3,1");
-  EXPECT_EQ(lines[2], "case_0001,failed,1,\"diverged at frame 6, \"\"badly\"\"\",cauchy,,,,,,,,,");
-  EXPECT_EQ(lines[3], "case_0002,pending,,,0.1,,,,,,,,,");
-  EXPECT_EQ(lines[4], "case_0003,pending,,,3,,,,,,,,,");
-  EXPECT_EQ(lines[5], "case_0004,interrupted,143,interrupted by SIGTERM,4,,,,,,,,,");
+            "final_active_L0,final_active_L1,wall_time,real_time_factor,force_evaluations,steps,"
+            "splits,merges");
+  EXPECT_EQ(lines[1], "case_0000,done,0,,50000,,0.0058868,9,4,0.79,2.5,128,1024,3,1");
+  EXPECT_EQ(lines[2], "case_0001,failed,1,\"diverged at frame 6, \"\"badly\"\"\",cauchy,,,,,,,,,,");
+  EXPECT_EQ(lines[3], "case_0002,pending,,,0.1,,,,,,,,,,");
+  EXPECT_EQ(lines[4], "case_0003,pending,,,3,,,,,,,,,,");
+  EXPECT_EQ(lines[5], "case_0004,interrupted,143,interrupted by SIGTERM,4,,,,,,,,,,");
 }
 
 TEST(CaseRunner, FailureMessageIsTheErrorTail) {
