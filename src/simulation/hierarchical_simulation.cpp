@@ -156,9 +156,6 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   restart_integrator();
 }
 
-// After the point sets changed: Störmer–Verlet needs the force at the current state. With time
-// levels every integrator takes kick-drift steps (no saved half-kick force); one evaluation of
-// every served point gives the outputs their forces at the frame's time.
 const std::vector<TetLocator>& HierarchicalSimulation::locators() const {
   if (locators_.empty()) {
     locators_.reserve(meshes_.size());
@@ -167,6 +164,9 @@ const std::vector<TetLocator>& HierarchicalSimulation::locators() const {
   return locators_;
 }
 
+// After the point sets changed: Störmer–Verlet needs the force at the current state. With time
+// levels every integrator takes kick-drift steps (no saved half-kick force); one evaluation of
+// every served point gives the outputs their forces at the frame's time.
 void HierarchicalSimulation::restart_integrator() {
   if (time_levels_)
     compute_forces();
