@@ -9,7 +9,8 @@ particles per time level), tool_force.png (|F| and F_z of every tool at every si
 only when the scenario has tools), energies.png (kinetic and elastic energy), events.png
 (splits and merges per frame) and time_shares.png (each frame's wall time per task, stacked,
 with the run's shares in the legend: internal forces, ghosts, contact, integration,
-adaptivity, output, other; only when the log has /frames/wall_time_parts). A killed run is plotted up to its last complete frame: the
+adaptivity, output, other; a dashed line at real time, frame_dt a frame, and the count of
+frames above it in the title; only when the log has /frames/wall_time_parts). A killed run is plotted up to its last complete frame: the
 length of /frames/frame counts the complete frames and extra rows are ignored. A run still
 going can be plotted too (the file is opened without HDF5 file locking).
 
@@ -336,7 +337,9 @@ def plot_events(run):
 def plot_time_shares(run):
     """Each frame's wall time per task, stacked (ms), as the thesis reports its time shares
     (§5: model 60 %, surface 5 %, collision 20 %, display 15 %); the legend gives each task's
-    share of the whole run. Frame 0 (set-up output only) is left out."""
+    share of the whole run. Frame 0 (set-up output only) is left out. A dashed line marks real
+    time (frame_dt of wall time per frame): a stack above it is a frame that fell behind the
+    clock, and the title counts them."""
     parts = run["wall_time_parts"]
     if parts is None or len(parts) < 2:
         return None
@@ -348,10 +351,19 @@ def plot_time_shares(run):
               for name, share in zip(run["task_names"], shares)]
     ax.stackplot(run["time"][1:], *(1e3 * parts[1:, k] for k in range(parts.shape[1])),
                  labels=labels, colors=[cmap(k) for k in range(parts.shape[1])], alpha=0.85)
+    title = "%s: wall time per task (stacked), %.3g s over %d frames" % (
+        run["name"], total, len(parts) - 1)
+    if run["frame_dt"]:
+        real_time = 1e3 * run["frame_dt"]
+        ax.axhline(real_time, color="black", linestyle="--", linewidth=1)
+        ax.annotate("real time (%.3g ms a frame)" % real_time, (0, real_time),
+                    xycoords=("axes fraction", "data"), xytext=(4, 3),
+                    textcoords="offset points", fontsize=8)
+        behind = int(np.sum(1e3 * parts[1:].sum(axis=1) > real_time))
+        title += "\n%d of %d frames slower than real time" % (behind, len(parts) - 1)
     ax.set_xlabel("simulated time (s)")
     ax.set_ylabel("wall time per frame (ms)")
-    ax.set_title("%s: wall time per task (stacked), %.3g s over %d frames"
-                 % (run["name"], total, len(parts) - 1))
+    ax.set_title(title)
     ax.grid(alpha=0.3)
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=8, title="share of the run")
     fig.tight_layout()

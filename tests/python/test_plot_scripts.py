@@ -181,6 +181,12 @@ def test_time_shares(pr, liver):
           all(l.startswith(n.replace("_", " ")) for l, n in zip(labels, names)) and
           abs(sum(shares) - 100) < 0.5 and np.isclose(top, 1e3 * parts[1:].sum(axis=1).max()),
           "time_shares: %s; stack top %.1f ms = the longest frame" % (labels, top))
+    # Real time: a dashed line at frame_dt a frame, and the frames above it counted.
+    lines = [l for l in ax.get_lines() if l.get_linestyle() == "--"]
+    behind = int(np.sum(parts[1:].sum(axis=1) > run["frame_dt"]))
+    check(len(lines) == 1 and np.allclose(lines[0].get_ydata(), 1e3 * run["frame_dt"]) and
+          ("%d of %d frames slower than real time" % (behind, len(parts) - 1)) in ax.get_title(),
+          "time_shares: real time at %.3g ms; title %r" % (1e3 * run["frame_dt"], ax.get_title()))
 
 
 def test_time_levels(pr, beam):
