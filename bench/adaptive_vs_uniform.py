@@ -21,7 +21,9 @@ empties it before each run, as a hierarchy's very first run.
         [--cache warm|cold] [--no-frames]
 
 After the pairs, the adaptive run is also timed as bundled, with its VTK frames written (unless
---no-frames): its real-time factor then, and the frames' own wall time.
+--no-frames): its real-time factor then, and the frames' own wall time. For both, the frames
+that took longer than frame_dt of wall time (log.h5 /frames/wall_time_parts, output included)
+and the slowest: a real-time loop misses those, whatever the average.
 
 --callgrind also runs each kind once under valgrind's callgrind and prints the instructions each
 executes (user space, the whole process) and their ratio: a count that does not move with the
@@ -52,6 +54,17 @@ def run_env():
     if CACHE["cold"]:
         shutil.rmtree(CACHE["dir"], ignore_errors=True)
     return dict(os.environ, MRSIM_CACHE_DIR=CACHE["dir"])
+
+
+def behind_real_time(out):
+    """(frames whose wall time, output included, exceeded frame_dt; frames; the slowest frame's
+    wall time over frame_dt) of the run in `out`: the average real-time factor hides the frames
+    a real-time loop would have missed."""
+    with open(os.path.join(out, "scenario.yaml")) as f:
+        frame_dt = float(yaml.safe_load(f)["time"]["frame_dt"])
+    with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
+        per_frame = h5["/frames/wall_time_parts"][1:].sum(axis=1)  # frame 0: output only
+    return int(np.sum(per_frame > frame_dt)), len(per_frame), float(per_frame.max() / frame_dt)
 
 
 def timed_run(binary, scenario, out, sets, frames=False):
@@ -143,8 +156,9 @@ def main():
                 cpu_s, wall_s, _ = timed_run(a.binary, a.scenario, out, [], frames=True)
                 with open(os.path.join(out, "summary.json")) as f:
                     output_s = json.load(f)["wall_time_parts"]["output"]
-                framed.append((cpu_s, wall_s, output_s))
+                framed.append((cpu_s, wall_s, output_s) + behind_real_time(out))
         figures = {k: counters(outs[k]) for k in runs}
+        late = behind_real_time(outs["adaptive"])  # the last adaptive run, no VTK output
         with open(os.path.join(outs["adaptive"], "summary.json")) as f:
             kernel = json.load(f).get("force_kernel", "unknown")  # it sets the speed, not the bits
         counted = {"adaptive": instructions(a.binary, a.scenario, outs["adaptive"], []),
@@ -187,10 +201,13 @@ def main():
         result["tool_force_peak_difference"] = float(abs(na.max() - nu.max()) / nu.max())
         result["tool_force_max_difference"] = float(np.abs(na - nu).max() / nu.max())
         result["tool_samples"] = int(len(fa))
+    result["frames_behind_real_time"], result["slowest_frame_over_frame_dt"] = late[0], late[2]
     if framed:
-        result["cpu_adaptive_with_frames_s"] = statistics.median(c for c, _, _ in framed)
-        result["realtime_adaptive_with_frames"] = duration / statistics.median(w for _, w, _ in framed)
-        result["frames_output_s"] = statistics.median(o for _, _, o in framed)
+        result["cpu_adaptive_with_frames_s"] = statistics.median(f[0] for f in framed)
+        result["realtime_adaptive_with_frames"] = duration / statistics.median(f[1] for f in framed)
+        result["frames_output_s"] = statistics.median(f[2] for f in framed)
+        result["frames_behind_real_time_with_frames"] = statistics.median(f[3] for f in framed)
+        result["slowest_frame_with_frames"] = statistics.median(f[5] for f in framed)
     result["cache"] = a.cache
     result["force_kernel"] = kernel
     print("%s, one thread, median of %d paired runs (CPU = user + sys of the process), %s cache,"
@@ -219,11 +236,16 @@ def main():
           % (result["loop_ratio"], result["loop_ratio"] / result["tet_update_ratio"]))
     print("  outside the step loop (start-up, set-up, end; wall): adaptive %.3f s, uniform %.3f s"
           % (result["outside_loop_adaptive_s"], result["outside_loop_uniform_s"]))
+    print("  frames slower than real time (wall > frame_dt), adaptive, no VTK output: %d of %d,"
+          " the slowest %.2f x frame_dt (the last run)" % late)
     if framed:
         print("  adaptive with its VTK frames written (as bundled): CPU %.2f s, real time %.2fx,"
               " the frames' own wall time %.3f s (medians of %d)"
               % (result["cpu_adaptive_with_frames_s"], result["realtime_adaptive_with_frames"],
                  result["frames_output_s"], len(framed)))
+        print("  with its VTK frames: %g of %d frames slower than real time, the slowest %.2f x"
+              " frame_dt (medians)" % (result["frames_behind_real_time_with_frames"], late[1],
+                                       result["slowest_frame_with_frames"]))
     if counted and counted["adaptive"] is None:
         print("  instructions: skipped (no valgrind on PATH)")
     elif counted:
