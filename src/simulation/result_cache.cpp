@@ -61,38 +61,8 @@ std::filesystem::path result_cache_dir(std::string_view kind) {
 
 namespace {
 
-// A folder keyed by the build grows with every rebuild: past kMostFiles results or kMostBytes
-// the oldest go, down to three quarters of each. A result that goes is only computed again.
-constexpr std::size_t kMostFiles = 512;
-constexpr std::uintmax_t kMostBytes = std::uintmax_t{256} << 20;
-
 bool is_result(const std::filesystem::path& p) {
   return p.extension() == ".json" || p.extension() == ".bin";
-}
-
-void prune(const std::filesystem::path& dir) {
-  std::error_code ec;
-  struct Entry {
-    std::filesystem::file_time_type written;
-    std::filesystem::path path;
-    std::uintmax_t size;
-    bool operator<(const Entry& o) const { return written < o.written; }
-  };
-  std::vector<Entry> files;
-  std::uintmax_t bytes = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-    if (entry.is_regular_file(ec) && is_result(entry.path())) {
-      files.push_back({entry.last_write_time(ec), entry.path(), entry.file_size(ec)});
-      bytes += files.back().size;
-    }
-  if (ec || (files.size() <= kMostFiles && bytes <= kMostBytes)) return;
-  std::sort(files.begin(), files.end());
-  std::size_t left = files.size();
-  for (const Entry& f : files) {
-    if (left <= kMostFiles * 3 / 4 && bytes <= kMostBytes * 3 / 4) break;
-    if (std::filesystem::remove(f.path, ec)) bytes -= f.size;
-    --left;
-  }
 }
 
 // `bytes` as `file`: written under a name unique to the process, then renamed, so that
@@ -112,7 +82,7 @@ void write_atomically(const std::filesystem::path& file, std::string_view bytes,
     if (!out) ec = std::make_error_code(std::errc::io_error);
   }
   if (!ec) std::filesystem::rename(tmp, file, ec);
-  if (!ec) prune(dir);
+  if (!ec) prune_results(dir, file);
   if (ec) {
     std::filesystem::remove(tmp, ec);
     warn("could not write the " + std::string(what) + " cache in " + dir.string() +
@@ -146,6 +116,33 @@ std::uint64_t checksum(std::string_view bytes) {
 }
 
 }  // namespace
+
+void prune_results(const std::filesystem::path& dir, const std::filesystem::path& kept,
+                   ResultLimits limits) {
+  std::error_code ec;
+  struct Entry {
+    std::filesystem::file_time_type written;
+    std::filesystem::path path;
+    std::uintmax_t size;
+    bool operator<(const Entry& o) const { return written < o.written; }
+  };
+  std::vector<Entry> files;
+  std::uintmax_t bytes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+    if (entry.is_regular_file(ec) && is_result(entry.path())) {
+      files.push_back({entry.last_write_time(ec), entry.path(), entry.file_size(ec)});
+      bytes += files.back().size;
+    }
+  if (ec || (files.size() <= limits.files && bytes <= limits.bytes)) return;
+  std::sort(files.begin(), files.end());
+  std::size_t left = files.size();
+  for (const Entry& f : files) {
+    if (left <= limits.files * 3 / 4 && bytes <= limits.bytes * 3 / 4) break;
+    if (f.path == kept) continue;
+    if (std::filesystem::remove(f.path, ec)) bytes -= f.size;
+    --left;
+  }
+}
 
 bool read_cached_result(const std::filesystem::path& file, const std::string& key,
                         std::string_view what,

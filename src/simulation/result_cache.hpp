@@ -35,6 +35,19 @@ struct InputHash {
   std::string hex() const;
 };
 
+/// How much a folder of results may hold before its oldest go.
+struct ResultLimits {
+  std::size_t files = 512;
+  std::uintmax_t bytes = std::uintmax_t{256} << 20;
+};
+
+/// A folder keyed by the build grows with every rebuild: past `limits` the oldest results go,
+/// down to three quarters of each limit, but never `kept` (the result just written: one result
+/// larger than the limit on its own stays until the next). write_cached_result and
+/// write_cached_bytes call it after each write. A result that goes is only computed again.
+void prune_results(const std::filesystem::path& dir, const std::filesystem::path& kept,
+                   ResultLimits limits = {});
+
 /// The folder of one kind of cached result; empty when no folder can be named (no HOME).
 std::filesystem::path result_cache_dir(std::string_view kind);
 

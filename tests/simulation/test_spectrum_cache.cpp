@@ -176,3 +176,25 @@ TEST(ResultCache, PastTheByteLimitTheOldestResultsGo) {
                                 [&](std::string_view p) { read = p == "payload"; }));
   EXPECT_TRUE(read);
 }
+
+// The result just written stays, even when it alone is over the limit; the older ones go.
+TEST(ResultCache, TheResultJustWrittenStaysWhateverItsSize) {
+  CacheFolder folder("spectra");
+  const std::filesystem::path dir = result_cache_dir("spectra");
+  std::filesystem::create_directories(dir);
+  const auto now = std::filesystem::file_time_type::clock::now();
+  for (int k = 0; k < 3; ++k) {
+    const std::filesystem::path f = dir / ("old_" + std::to_string(k) + ".bin");
+    std::ofstream(f) << std::string(100, 'x');
+    std::filesystem::last_write_time(f, now - std::chrono::hours(10 - k));
+  }
+  const std::filesystem::path big = dir / "big.bin";
+  std::ofstream(big) << std::string(2000, 'x');  // the newest, and alone above 1000 bytes
+  prune_results(dir, big, {10, 1000});
+  std::vector<std::string> left;
+  for (const auto& f : folder.files("spectra")) left.push_back(f.filename().string());
+  EXPECT_EQ(left, (std::vector<std::string>{"big.bin"}));
+  // Without `kept`, it would go too.
+  prune_results(dir, dir / "other.bin", {10, 1000});
+  EXPECT_TRUE(folder.files("spectra").empty());
+}
