@@ -141,6 +141,22 @@ SkinBinding read_binding(std::string_view bytes, std::size_t vertices,
   return b;
 }
 
+// The result `read` makes of the file kept under `key` in `kind`, or else `compute()`, stored
+// (as `record` writes it) for the next run.
+template <class Read, class Compute, class Record>
+auto kept_or_computed(std::string_view kind, const InputHash& inputs, std::string_view what,
+                      Read read, Compute compute, Record record, bool* reused) {
+  const std::string key = key_of(inputs, kind);
+  const std::filesystem::path file = file_of(kind, key);
+  std::optional<decltype(compute())> known;
+  read_cached_bytes(file, key, what, [&](std::string_view bytes) { known = read(bytes); });
+  if (reused) *reused = known.has_value();
+  if (known) return std::move(*known);
+  auto computed = compute();
+  write_cached_bytes(file, key, record(computed), what);
+  return computed;
+}
+
 }  // namespace
 
 InputHash hierarchy_inputs(const std::vector<HierarchyLevel>& levels) {
@@ -153,16 +169,10 @@ InputHash hierarchy_inputs(const std::vector<HierarchyLevel>& levels) {
 std::vector<LevelLinks> cached_level_links(const std::vector<HierarchyLevel>& levels,
                                            const InputHash& meshes, const LocatorSource& locators,
                                            bool* reused) {
-  const std::string key = key_of(meshes, "links");
-  const std::filesystem::path file = file_of("links", key);
-  std::optional<std::vector<LevelLinks>> known;
-  read_cached_bytes(file, key, "level links",
-                    [&](std::string_view bytes) { known = read_links(bytes, levels); });
-  if (reused) *reused = known.has_value();
-  if (known) return std::move(*known);
-  std::vector<LevelLinks> links = build_level_links(levels, locators());
-  write_cached_bytes(file, key, links_record(links), "level links");
-  return links;
+  return kept_or_computed(
+      "links", meshes, "level links",
+      [&](std::string_view bytes) { return read_links(bytes, levels); },
+      [&] { return build_level_links(levels, locators()); }, links_record, reused);
 }
 
 SkinBinding cached_skin_binding(const Skin& skin, const std::vector<HierarchyLevel>& levels,
@@ -176,17 +186,10 @@ SkinBinding cached_skin_binding(const Skin& skin, const std::vector<HierarchyLev
   h.value(skin.point.size());
   if (!skin.point.empty()) h.bytes(skin.point.data(), skin.point.size() * sizeof(int));
   h.value(finest_in_coarser != nullptr);
-  const std::string key = key_of(h, "skin_binding");
-  const std::filesystem::path file = file_of("skin_binding", key);
-  std::optional<SkinBinding> known;
-  read_cached_bytes(file, key, "skin binding", [&](std::string_view bytes) {
-    known = read_binding(bytes, skin.rest.size(), levels);
-  });
-  if (reused) *reused = known.has_value();
-  if (known) return std::move(*known);
-  SkinBinding b = bind_skin(skin, locators(), finest_in_coarser);
-  write_cached_bytes(file, key, binding_record(b), "skin binding");
-  return b;
+  return kept_or_computed(
+      "skin_binding", h, "skin binding",
+      [&](std::string_view bytes) { return read_binding(bytes, skin.rest.size(), levels); },
+      [&] { return bind_skin(skin, locators(), finest_in_coarser); }, binding_record, reused);
 }
 
 }  // namespace mrsim

@@ -95,6 +95,18 @@ void ignored(std::string_view what, const std::filesystem::path& file, const cha
        "); computing it again");
 }
 
+// `take` run on what a cache file held: true when it returned; a throw is said and ignored.
+template <class Take>
+bool taken(std::string_view what, const std::filesystem::path& file, Take take) {
+  try {
+    take();
+    return true;
+  } catch (const std::exception& e) {
+    ignored(what, file, e.what());
+    return false;
+  }
+}
+
 // The binary files' header: a magic word (it names the layout's version), the key (16 hex
 // digits), the payload's size and checksum.
 constexpr char kMagic[8] = {'M', 'R', 'S', 'I', 'M', 'B', 'C', '1'};
@@ -149,15 +161,11 @@ bool read_cached_result(const std::filesystem::path& file, const std::string& ke
                         const std::function<void(const nlohmann::json&)>& take) {
   std::error_code ec;
   if (file.empty() || !std::filesystem::is_regular_file(file, ec)) return false;
-  try {
+  return taken(what, file, [&] {
     const nlohmann::json j = nlohmann::json::parse(read_text_if_any(file));
     if (j.at("key").get<std::string>() != key) throw std::runtime_error("another key");
     take(j);
-    return true;
-  } catch (const std::exception& e) {
-    ignored(what, file, e.what());
-    return false;
-  }
+  });
 }
 
 void write_cached_result(const std::filesystem::path& file, const std::string& key,
@@ -190,13 +198,7 @@ bool read_cached_bytes(const std::filesystem::path& file, const std::string& key
     ignored(what, file, "damaged");
     return false;
   }
-  try {
-    take(payload);
-    return true;
-  } catch (const std::exception& e) {
-    ignored(what, file, e.what());
-    return false;
-  }
+  return taken(what, file, [&] { take(payload); });
 }
 
 void write_cached_bytes(const std::filesystem::path& file, const std::string& key,

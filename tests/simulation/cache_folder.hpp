@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -33,6 +34,13 @@ class CacheFolder {
     std::error_code ec;
     for (const auto& e : std::filesystem::directory_iterator(dir_ / kind, ec))
       out.push_back(e.path());
+    return out;
+  }
+  /// Their file names, sorted.
+  std::vector<std::string> names(const std::string& kind) const {
+    std::vector<std::string> out;
+    for (const auto& f : files(kind)) out.push_back(f.filename().string());
+    std::sort(out.begin(), out.end());
     return out;
   }
 

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -37,6 +36,20 @@ std::vector<std::uint8_t> held(const TetMesh& mesh) {
 }
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// n results <prefix><k><ext> of `size` bytes (sparse: no disk) in `dir`, the k-th written
+// `hours` − k hours ago: the oldest first.
+void aged_results(const std::filesystem::path& dir, const std::string& prefix,
+                  const std::string& ext, int n, std::uintmax_t size, int hours) {
+  std::filesystem::create_directories(dir);
+  const auto now = std::filesystem::file_time_type::clock::now();
+  for (int k = 0; k < n; ++k) {
+    const std::filesystem::path f = dir / (prefix + std::to_string(k) + ext);
+    std::ofstream(f).close();
+    std::filesystem::resize_file(f, size);
+    std::filesystem::last_write_time(f, now - std::chrono::hours(hours - k));
+  }
+}
 
 }  // namespace
 
@@ -130,13 +143,7 @@ TEST(SpectrumCache, AFolderThatCannotBeWrittenCostsAWarning) {
 TEST(ResultCache, PastTheLimitTheOldestResultsGo) {
   CacheFolder folder("spectra");
   const std::filesystem::path dir = result_cache_dir("spectra");
-  std::filesystem::create_directories(dir);
-  const auto now = std::filesystem::file_time_type::clock::now();
-  for (int k = 0; k < 600; ++k) {
-    const std::filesystem::path f = dir / ("old_" + std::to_string(k) + ".json");
-    std::ofstream(f) << "{}";
-    std::filesystem::last_write_time(f, now - std::chrono::hours(1000 - k));
-  }
+  aged_results(dir, "old_", ".json", 600, 2, 1000);
   const TetMesh mesh = box();
   cached_level_model(mesh, law(), false, held(mesh));
   const auto files = folder.files("spectra");
@@ -158,19 +165,9 @@ TEST(ResultCache, PastTheLimitTheOldestResultsGo) {
 TEST(ResultCache, PastTheByteLimitTheOldestResultsGo) {
   CacheFolder folder("spectra");
   const std::filesystem::path dir = result_cache_dir("spectra");
-  std::filesystem::create_directories(dir);
-  const auto now = std::filesystem::file_time_type::clock::now();
-  for (int k = 0; k < 3; ++k) {
-    const std::filesystem::path f = dir / ("big_" + std::to_string(k) + ".bin");
-    std::ofstream(f).close();
-    std::filesystem::resize_file(f, std::uintmax_t{100} << 20);
-    std::filesystem::last_write_time(f, now - std::chrono::hours(10 - k));
-  }
+  aged_results(dir, "big_", ".bin", 3, std::uintmax_t{100} << 20, 10);
   write_cached_bytes(dir / "small.bin", "0123456789abcdef", "payload", "test");
-  std::vector<std::string> left;
-  for (const auto& f : folder.files("spectra")) left.push_back(f.filename().string());
-  std::sort(left.begin(), left.end());
-  EXPECT_EQ(left, (std::vector<std::string>{"big_2.bin", "small.bin"}));
+  EXPECT_EQ(folder.names("spectra"), (std::vector<std::string>{"big_2.bin", "small.bin"}));
   bool read = false;
   EXPECT_TRUE(read_cached_bytes(dir / "small.bin", "0123456789abcdef", "test",
                                 [&](std::string_view p) { read = p == "payload"; }));
@@ -181,19 +178,11 @@ TEST(ResultCache, PastTheByteLimitTheOldestResultsGo) {
 TEST(ResultCache, TheResultJustWrittenStaysWhateverItsSize) {
   CacheFolder folder("spectra");
   const std::filesystem::path dir = result_cache_dir("spectra");
-  std::filesystem::create_directories(dir);
-  const auto now = std::filesystem::file_time_type::clock::now();
-  for (int k = 0; k < 3; ++k) {
-    const std::filesystem::path f = dir / ("old_" + std::to_string(k) + ".bin");
-    std::ofstream(f) << std::string(100, 'x');
-    std::filesystem::last_write_time(f, now - std::chrono::hours(10 - k));
-  }
+  aged_results(dir, "old_", ".bin", 3, 100, 10);
   const std::filesystem::path big = dir / "big.bin";
   std::ofstream(big) << std::string(2000, 'x');  // the newest, and alone above 1000 bytes
   prune_results(dir, big, {10, 1000});
-  std::vector<std::string> left;
-  for (const auto& f : folder.files("spectra")) left.push_back(f.filename().string());
-  EXPECT_EQ(left, (std::vector<std::string>{"big.bin"}));
+  EXPECT_EQ(folder.names("spectra"), (std::vector<std::string>{"big.bin"}));
   // Without `kept`, it would go too.
   prune_results(dir, dir / "other.bin", {10, 1000});
   EXPECT_TRUE(folder.files("spectra").empty());
