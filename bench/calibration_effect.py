@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""What `object.calibration: orthotropic` does to the adaptive runs (issue 16 point 1; the
+"""What `object.calibration` (orthotropic, or per_tet with --calibration per_tet) does to the adaptive runs (issue 16 point 1; the
 tables of docs/hierarchy.md "Calibrated levels"): each scenario run adaptively with and without
 calibrated coarse levels, and on its coarser levels alone (adaptivity.space.max_level), against
 its finest level alone, frames every 20 ms.
@@ -12,6 +12,7 @@ frame over that peak. Accuracy only (the runs go two at a time): timings are ben
 adaptive_vs_uniform.py. The calibration is computed into a temporary cache folder.
 
     /usr/bin/python3 bench/calibration_effect.py [--binary build/mrsim] [--only beam|liver]
+        [--calibration orthotropic|per_tet]
 """
 import argparse
 import glob
@@ -84,13 +85,16 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--binary", default=os.path.join(here, "..", "build", "mrsim"))
     ap.add_argument("--only", choices=sorted(CASES))
+    ap.add_argument("--calibration", choices=["orthotropic", "per_tet"], default="orthotropic")
     args = ap.parse_args()
+    cal = "object.calibration=" + args.calibration
     with tempfile.TemporaryDirectory() as work:
         env = dict(os.environ, MRSIM_CACHE_DIR=os.path.join(work, "cache"))
         for key, (scenario, base, finest, select, runs) in CASES.items():
             if args.only and key != args.only:
                 continue
             path = os.path.join(here, "..", "scenarios", scenario)
+            runs = {name: [cal if s == CAL else s for s in sets] for name, sets in runs.items()}
             run_all(args.binary, path, base, {"finest alone": finest, **runs}, work, env)
             ref = curve(os.path.join(work, "finest_alone"), select)
             peak = np.abs(ref).max()

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "hierarchy/calibration_kind.hpp"
 #include "mesh/tet_mesh.hpp"
 #include "physics/material_law.hpp"
 
@@ -26,9 +27,11 @@ namespace mrsim {
 
 struct LevelCalibration {
   StiffnessScales scales;  // all ones on the finest level
+  // CalibrationKind::PerTet: one factor per tet of the level on top of `scales` (empty: none).
+  std::vector<double> tet_scales;
   // The level alone against the finest level, before and after the fit (ratios): mean and
   // largest displacement under gravity along x, y, z (empty for a free body; the largest is
-  // reported, not fitted) and the six lowest frequencies.
+  // fitted by PerTet only) and the six lowest frequencies.
   std::vector<double> sag_before, sag_after, peak_before, peak_after;
   std::vector<double> frequency_before, frequency_after;
   int iterations = 0;
@@ -52,8 +55,11 @@ inline constexpr CalibrationRatios kCalibrationRatios[] = {
 /// One entry per level, the last (finest) one uncalibrated. `fixed`: per level, one flag per
 /// point (as HierarchySetup::fixed). Every level must be held at three points or more, or none
 /// at all (a free body: frequencies only); anything else is an InputError.
-std::vector<LevelCalibration> calibrate_levels(const std::vector<const TetMesh*>& meshes,
-                                               const MaterialLaw& law,
-                                               const std::vector<std::vector<std::uint8_t>>& fixed);
+/// `kind` PerTet also gives each coarser level one factor per tet, fitted with the level's tensor
+/// to the finest level's largest displacements too (docs/hierarchy.md "Per-tet factors").
+std::vector<LevelCalibration> calibrate_levels(
+    const std::vector<const TetMesh*>& meshes, const MaterialLaw& law,
+    const std::vector<std::vector<std::uint8_t>>& fixed,
+    CalibrationKind kind = CalibrationKind::Orthotropic);
 
 }  // namespace mrsim

@@ -105,7 +105,7 @@ std::vector<Mat3> orthotropic_edge_matrices(const TetGeometry& geo, const PointA
       for (int b = 0; b < 4; ++b)
         if (b != a)
           k[slot[geo.tets[t][b]]] +=
-              orthotropic_block(geo.grad[t][a], geo.grad[t][b], geo.volume[t], lam, m);
+              orthotropic_block(geo.grad[t][a], geo.grad[t][b], geo.elastic_volume[t], lam, m);
     }
     slot.reset(adj, i);
   }

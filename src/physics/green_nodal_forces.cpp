@@ -35,7 +35,7 @@ static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(TetGradients) == 12 *
 }  // namespace
 
 GreenKernelData green_kernel_data(const LevelModel& m) {
-  return kernel_data(m.law, m.geo.tets.data(), m.geo.grad.data(), m.geo.volume.data());
+  return kernel_data(m.law, m.geo.tets.data(), m.geo.grad.data(), m.geo.elastic_volume.data());
 }
 
 bool has_avx512_kernel() {
@@ -172,7 +172,7 @@ void green_scatter_packed(const LevelModel& m, PackedTets& packed, const Vec3* u
     packed.weight_source = weight;
   }
   const GreenKernelData d =
-      kernel_data(m.law, packed.tets.data(), packed.grad.data(), packed.volume.data());
+      kernel_data(m.law, packed.tets.data(), packed.grad.data(), packed.elastic_volume.data());
   scatter(d, packed.order.data(), n, u, v, weight ? packed.weight.data() : nullptr, mask, f, 0,
           kAllPoints);
 }

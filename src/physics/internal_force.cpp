@@ -42,7 +42,7 @@ inline void tet_nodal_forces(const LevelModel& m, int t, const Vec3* u, const Ve
   } else {
     P = green ? green_piola(G, nullptr, m.law) : cauchy_stress(G, nullptr, m.law);
   }
-  P *= -m.geo.volume[t];
+  P *= -m.geo.elastic_volume[t];
   for (int a = 0; a < 4; ++a) out[a].noalias() = P * g[a];
 }
 
@@ -234,7 +234,7 @@ Vec3 point_internal_force(const LevelModel& m, int i, const Vec3* u, const Vec3*
     const Mat3* gd = m.law.damped() ? &Gd : nullptr;
     const Mat3 P = m.law.strain == StrainMeasure::GreenLagrange ? green_piola(G, gd, m.law)
                                                         : cauchy_stress(G, gd, m.law);
-    fi -= m.geo.volume[t] * (P * g[m.adj.inc_local[s]]);
+    fi -= m.geo.elastic_volume[t] * (P * g[m.adj.inc_local[s]]);
   }
   return fi;
 }
@@ -244,7 +244,7 @@ double elastic_energy(const LevelModel& m, const Vec3* u) {
   for (int t = 0; t < m.num_tets(); ++t) {
     const Mat3 G = tet_gradient(m.geo.grad[t], m.geo.tets[t], u);
     const Mat3 E = m.law.strain == StrainMeasure::GreenLagrange ? green_strain(G) : cauchy_strain(G);
-    energy += m.geo.volume[t] * energy_density(E, m.law);
+    energy += m.geo.elastic_volume[t] * energy_density(E, m.law);
   }
   return energy;
 }

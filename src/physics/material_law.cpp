@@ -33,7 +33,10 @@ std::array<double, 7> StiffnessScales::components() const {
 }
 
 double MaterialLaw::p_wave_speed() const {
-  return std::sqrt((bound_lambda() + 2 * bound_mu()) / density);
+  double tet = 1;  // the stiffest tet's factor (object.calibration: per_tet)
+  if (tet_scales)
+    for (double s : *tet_scales) tet = std::max(tet, s);
+  return std::sqrt(tet * (bound_lambda() + 2 * bound_mu()) / density);
 }
 
 }  // namespace mrsim

@@ -2,6 +2,8 @@
 // Constitutive parameters as the force kernels see them (method.md §1): Lamé λ, μ for the
 // elastic stress, φ, ψ for the strain-rate damping of thesis eq. 2.22, density for the masses.
 #include <array>
+#include <memory>
+#include <vector>
 
 namespace mrsim {
 
@@ -29,6 +31,9 @@ struct MaterialLaw {
   double phi = 0, psi = 0;    // Pa.s
   double density = 1000;      // kg/m^3
   StiffnessScales scales;     // calibrated level; isotropic by default
+  // object.calibration: per_tet: one more factor per tet of the level on its whole tensor (and
+  // damping); null: 1 for every tet. The level's TetGeometry::elastic_volume carries it.
+  std::shared_ptr<const std::vector<double>> tet_scales;
 
   bool damped() const { return phi != 0 || psi != 0; }
   /// P-wave speed √((λ+2μ)/ρ), the Courant speed of method.md §5.2 (largest scales).

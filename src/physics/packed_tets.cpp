@@ -9,14 +9,14 @@ void PackedTets::pack(const TetGeometry& geo, const std::vector<int>& ids) {
   count = static_cast<int>(ids.size());
   tets.resize(count);
   grad.resize(count);
-  volume.resize(count);
+  elastic_volume.resize(count);
   weight.resize(count);
   order.resize(count);
   weight_source = nullptr;
   for (int k = 0; k < count; ++k) {
     tets[k] = geo.tets[ids[k]];
     grad[k] = geo.grad[ids[k]];
-    volume[k] = geo.volume[ids[k]];
+    elastic_volume[k] = geo.elastic_volume[ids[k]];
   }
   std::iota(order.begin(), order.end(), 0);
 }
@@ -26,7 +26,7 @@ void PackedTets::clear() {
   count = 0;
   tets.clear();
   grad.clear();
-  volume.clear();
+  elastic_volume.clear();
   weight.clear();
   weight_source = nullptr;
   order.clear();

@@ -37,9 +37,9 @@ TetEnergyBounds tet_energy_bounds(const TetGeometry& geo, const MaterialLaw& law
     // One eigenvalue solve serves both bounds of the tet.
     const GradientNorms norms = gradient_norms(geo.grad[t]);
     // A calibrated level's tensor is bounded by its largest scales (MaterialLaw::bound_*).
-    out.stiffness[t] = energy_bound(norms, geo.volume[t], law.bound_lambda(), law.bound_mu());
+    out.stiffness[t] = energy_bound(norms, geo.elastic_volume[t], law.bound_lambda(), law.bound_mu());
     if (law.damped())
-      out.damping[t] = energy_bound(norms, geo.volume[t], law.bound_phi(), law.bound_psi());
+      out.damping[t] = energy_bound(norms, geo.elastic_volume[t], law.bound_phi(), law.bound_psi());
   }
   return out;
 }

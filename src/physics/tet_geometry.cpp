@@ -5,7 +5,7 @@
 
 namespace mrsim {
 
-TetGeometry build_tet_geometry(const TetMesh& mesh) {
+TetGeometry build_tet_geometry(const TetMesh& mesh, const std::vector<double>* tet_scales) {
   TetGeometry geo;
   const size_t n = mesh.tets.size();
   geo.tets = mesh.tets;
@@ -27,6 +27,13 @@ TetGeometry build_tet_geometry(const TetMesh& mesh) {
     const Mat3 Dinv = D.inverse();
     for (int a = 1; a < 4; ++a) geo.grad[t][a] = Dinv.row(a - 1).transpose();
     geo.grad[t][0] = -(geo.grad[t][1] + geo.grad[t][2] + geo.grad[t][3]);
+  }
+  geo.elastic_volume = geo.volume;
+  if (tet_scales) {
+    if (tet_scales->size() != n)
+      throw std::invalid_argument("build_tet_geometry: " + std::to_string(tet_scales->size()) +
+                                  " tet factors for " + std::to_string(n) + " tets");
+    for (size_t t = 0; t < n; ++t) geo.elastic_volume[t] *= (*tet_scales)[t];
   }
   return geo;
 }

@@ -16,6 +16,7 @@
 #include "core/vec.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "physics/material_law.hpp"
+#include "hierarchy/calibration_kind.hpp"
 #include "hierarchy/coupling_kind.hpp"
 #include "io/frame_compression.hpp"
 #include "time/integrator_kind.hpp"
@@ -122,7 +123,7 @@ struct Scenario {
   std::filesystem::path source;  // the YAML file it came from
   std::vector<LevelSpec> levels;
   LengthUnit units = LengthUnit::Metre;
-  bool calibrate = false;  // object.calibration: orthotropic (hierarchy/level_calibration.hpp)
+  CalibrationKind calibration = CalibrationKind::None;  // object.calibration (hierarchy/level_calibration.hpp)
   std::filesystem::path skin;  // absolute; empty: the finest level's boundary
   LengthUnit skin_units = LengthUnit::Metre;  // of the skin file (default: object.units)
   MaterialSpec material;

@@ -152,7 +152,10 @@ Scenario build_scenario(const json& resolved, const std::filesystem::path& sourc
     s.levels.push_back({file_path(level["mesh"], source)});
   s.units = resolved["object"]["units"] == "mm" ? LengthUnit::Millimetre : LengthUnit::Metre;
   s.skin_units = s.units;
-  s.calibrate = resolved["object"]["calibration"] == "orthotropic";
+  const std::string calibration = resolved["object"]["calibration"];
+  s.calibration = calibration == "orthotropic" ? CalibrationKind::Orthotropic
+                  : calibration == "per_tet"   ? CalibrationKind::PerTet
+                                               : CalibrationKind::None;
   if (resolved["object"].contains("skin")) {
     const json& skin = resolved["object"]["skin"];
     if (skin.contains("surface")) s.skin = file_path(skin["surface"], source);

@@ -1,5 +1,7 @@
 #include "simulation/calibration_cache.hpp"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "simulation/result_cache.hpp"
@@ -17,6 +19,7 @@ std::filesystem::path file_of(const std::filesystem::path& dir, const std::strin
 
 nlohmann::json to_json(const LevelCalibration& c) {
   nlohmann::json j = {{"scales", c.scales.components()}, {"iterations", c.iterations}};
+  if (!c.tet_scales.empty()) j["tet_scales"] = c.tet_scales;
   for (const CalibrationRatios& r : kCalibrationRatios)
     j[std::string(r.quantity) + "_" + r.when] = c.*r.member;
   return j;
@@ -28,6 +31,11 @@ LevelCalibration from_json(const nlohmann::json& j) {
   for (double x : s)
     if (!(x > 0)) throw std::runtime_error("non-positive factor");
   c.scales = StiffnessScales::from_components(s);
+  if (j.contains("tet_scales")) {
+    c.tet_scales = j.at("tet_scales").get<std::vector<double>>();
+    for (double x : c.tet_scales)
+      if (!(x > 0) || !std::isfinite(x)) throw std::runtime_error("a non-positive tet factor");
+  }
   for (const CalibrationRatios& r : kCalibrationRatios)
     c.*r.member = j.at(std::string(r.quantity) + "_" + r.when).get<std::vector<double>>();
   c.iterations = j.at("iterations").get<int>();
@@ -37,9 +45,12 @@ LevelCalibration from_json(const nlohmann::json& j) {
 }  // namespace
 
 std::string calibration_key(const std::vector<const TetMesh*>& meshes, const MaterialLaw& law,
-                            const std::vector<std::vector<std::uint8_t>>& fixed) {
+                            const std::vector<std::vector<std::uint8_t>>& fixed,
+                            CalibrationKind kind) {
   InputHash f;
   f.value(kFitVersion);
+  // The level-wide fit's keys stay what they were; the per-tet fit has its own.
+  if (kind == CalibrationKind::PerTet) f.value(kind);
   f.value(law.lambda);
   f.value(law.mu);
   f.value(law.density);
@@ -57,12 +68,16 @@ std::string calibration_key(const std::vector<const TetMesh*>& meshes, const Mat
 std::filesystem::path calibration_cache_dir() { return result_cache_dir("calibration"); }
 
 std::optional<std::vector<LevelCalibration>> read_cached_calibration(
-    const std::filesystem::path& dir, const std::string& key, std::size_t levels) {
+    const std::filesystem::path& dir, const std::string& key,
+    const std::vector<const TetMesh*>& meshes) {
   if (dir.empty()) return std::nullopt;
   std::vector<LevelCalibration> out;
   const bool read = read_cached_result(file_of(dir, key), key, "calibration", [&](const nlohmann::json& j) {
     for (const nlohmann::json& level : j.at("levels")) out.push_back(from_json(level));
-    if (out.size() != levels) throw std::runtime_error("another number of levels");
+    if (out.size() != meshes.size()) throw std::runtime_error("another number of levels");
+    for (std::size_t l = 0; l < out.size(); ++l)
+      if (!out[l].tet_scales.empty() && out[l].tet_scales.size() != meshes[l]->tets.size())
+        throw std::runtime_error("per-tet factors of another mesh");
   });
   if (!read) return std::nullopt;
   return out;

@@ -18,15 +18,17 @@ namespace mrsim {
 
 /// 16 hex digits (FNV-1a 64 of the fit's inputs).
 std::string calibration_key(const std::vector<const TetMesh*>& meshes, const MaterialLaw& law,
-                            const std::vector<std::vector<std::uint8_t>>& fixed);
+                            const std::vector<std::vector<std::uint8_t>>& fixed,
+                            CalibrationKind kind = CalibrationKind::Orthotropic);
 
 /// The folder of the cache files; empty when no folder can be named (no HOME).
 std::filesystem::path calibration_cache_dir();
 
-/// The cached calibration of `key`, or nothing (absent, unreadable or not of `levels` levels;
-/// a damaged file is reported by a warning and ignored).
+/// The cached calibration of `key`, or nothing (absent, unreadable, not of one entry per mesh or
+/// with per-tet factors not one per tet; a damaged file is reported by a warning and ignored).
 std::optional<std::vector<LevelCalibration>> read_cached_calibration(
-    const std::filesystem::path& dir, const std::string& key, std::size_t levels);
+    const std::filesystem::path& dir, const std::string& key,
+    const std::vector<const TetMesh*>& meshes);
 
 /// Stores it (best effort: a folder that cannot be written gives a warning, never an error).
 /// Written under a temporary name unique to the process, then renamed: concurrent runs of a

@@ -39,8 +39,14 @@ std::string calibration_line(int level, const LevelCalibration& c) {
   os << "; alone vs the finest level (before -> after):";
   for (size_t d = 0; d < c.sag_after.size(); ++d)
     os << " sag " << "xyz"[d] << ' ' << c.sag_before[d] << " -> " << c.sag_after[d] << ',';
+  for (size_t d = 0; d < c.peak_after.size() && !c.tet_scales.empty(); ++d)
+    os << " peak " << "xyz"[d] << ' ' << c.peak_before[d] << " -> " << c.peak_after[d] << ',';
   if (!c.frequency_after.empty())
     os << " f1 " << c.frequency_before[0] << " -> " << c.frequency_after[0];
+  if (!c.tet_scales.empty()) {
+    const auto [low, high] = std::minmax_element(c.tet_scales.begin(), c.tet_scales.end());
+    os << "; per-tet factors " << *low << " to " << *high;
+  }
   return os.str();
 }
 
@@ -51,18 +57,21 @@ LevelLaws level_laws(const Scenario& sc, const std::vector<const TetMesh*>& mesh
   const MaterialLaw law = material_law(sc.material);
   out.laws.assign(meshes.size(), law);
   out.held = select_fixed_points(meshes, sc.fixed);
-  if (!sc.calibrate || meshes.size() < 2) return out;
+  if (sc.calibration == CalibrationKind::None || meshes.size() < 2) return out;
   const std::filesystem::path cache = calibration_cache_dir();
-  const std::string key = calibration_key(meshes, law, out.held);
-  if (auto cached = read_cached_calibration(cache, key, meshes.size())) {
+  const std::string key = calibration_key(meshes, law, out.held, sc.calibration);
+  if (auto cached = read_cached_calibration(cache, key, meshes)) {
     out.calibration = std::move(*cached);
     info("object.calibration: read from the cache " + cache.string() + " (key " + key + ")");
   } else {
-    out.calibration = calibrate_levels(meshes, law, out.held);
+    out.calibration = calibrate_levels(meshes, law, out.held, sc.calibration);
     write_cached_calibration(cache, key, out.calibration);
   }
   for (size_t l = 0; l < meshes.size(); ++l) {
     out.laws[l].scales = out.calibration[l].scales;
+    if (!out.calibration[l].tet_scales.empty())
+      out.laws[l].tet_scales =
+          std::make_shared<const std::vector<double>>(out.calibration[l].tet_scales);
     if (l + 1 < meshes.size()) info(calibration_line(static_cast<int>(l), out.calibration[l]));
   }
   return out;

@@ -77,6 +77,10 @@ std::vector<std::vector<NamedValues>> calibration_attributes(
   for (const LevelCalibration& c : calibration) {
     const std::array<double, 7> scales = c.scales.components();
     std::vector<NamedValues> all = {{"calibration_scales", {scales.begin(), scales.end()}}};
+    if (!c.tet_scales.empty()) {  // per_tet: the range (a coarse level may have many tets)
+      const auto [low, high] = std::minmax_element(c.tet_scales.begin(), c.tet_scales.end());
+      all.push_back({"calibration_tet_scale_range", {*low, *high}});
+    }
     // The finest level (and a free body's sags) have no ratios: only what exists is written.
     for (const CalibrationRatios& r : kCalibrationRatios)
       if (!(c.*r.member).empty())

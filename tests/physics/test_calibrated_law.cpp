@@ -1,11 +1,13 @@
 // A calibrated level's orthotropic tensor (MaterialLaw::scales) through every path that reads
 // the material: the Green–Lagrange kernel builds, the Cauchy edge matrices, the per-point
-// force, the split stiffness of the calibration fit and its lowest-mode solver.
+// force, the split stiffness of the calibration fit and its lowest-mode solver; and the per-tet
+// factors of object.calibration: per_tet (MaterialLaw::tet_scales) through the same paths.
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -157,6 +159,106 @@ TEST(CalibratedLaw, LowestModesAreTheDenseOnes) {
           << (held ? "held" : "free") << " mode " << k;
     const Eigen::MatrixXd gram = modes.shapes.transpose() * cs.mass.asDiagonal() * modes.shapes;
     EXPECT_LT((gram - Eigen::MatrixXd::Identity(10, 10)).norm(), 1e-8);
+  }
+}
+
+std::vector<double> random_factors(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(std::log(0.3), std::log(3.0));
+  std::vector<double> p(n);
+  for (double& x : p) x = std::exp(d(rng));
+  return p;
+}
+
+// Each tet's factor multiplies its elastic and damping forces and its stable-step bounds, and
+// nothing of the masses or of the geometric weights (Laplacian criterion).
+TEST(CalibratedLaw, PerTetFactorsScaleEachTetsStiffnessNotItsMass) {
+  const TetMesh mesh = jittered_box(5, 3, 3, 0.2, 11);
+  for (const StrainMeasure strain : {StrainMeasure::GreenLagrange, StrainMeasure::Cauchy}) {
+    MaterialLaw law = law_with(5e5, 3e4, 0.7, 20);
+    law.strain = strain;
+    law.scales = kScales;
+    const LevelModel plain = build_level_model(mesh, law);
+    const std::vector<double> p = random_factors(plain.num_tets(), 12);
+    law.tet_scales = std::make_shared<const std::vector<double>>(p);
+    const LevelModel scaled = build_level_model(mesh, law);
+    ASSERT_EQ(scaled.mass, plain.mass);
+    ASSERT_EQ(scaled.laplacian_w, plain.laplacian_w);
+    ASSERT_EQ(scaled.geo.volume, plain.geo.volume);
+    for (int t = 0; t < plain.num_tets(); ++t) {
+      EXPECT_NEAR(scaled.bounds.stiffness[t], p[t] * plain.bounds.stiffness[t],
+                  1e-12 * scaled.bounds.stiffness[t]);
+      EXPECT_NEAR(scaled.bounds.damping[t], p[t] * plain.bounds.damping[t],
+                  1e-12 * scaled.bounds.damping[t]);
+    }
+    // One tet at a time: the level's force with only tet t's factor is plain + (p_t − 1) f_t.
+    const auto u = random_field(plain.num_points(), 2e-3, 13);
+    const auto v = random_field(plain.num_points(), 0.1, 14);
+    ForceWorkspace ws;
+    std::vector<Vec3> f_plain(plain.num_points()), f_scaled(plain.num_points());
+    internal_forces(plain, u.data(), v.data(), f_plain.data(), ws);
+    internal_forces(scaled, u.data(), v.data(), f_scaled.data(), ws);
+    // Direct sum of each tet's stress with its factor, per point.
+    double scale = 0, err = 0;
+    for (int i = 0; i < plain.num_points(); ++i) {
+      Vec3 expected = Vec3::Zero();
+      for (int s = plain.adj.inc_start[i]; s < plain.adj.inc_start[i + 1]; ++s) {
+        const int t = plain.adj.inc_tet[s];
+        const Mat3 G = tet_gradient(plain.geo.grad[t], plain.geo.tets[t], u.data());
+        const Mat3 Gd = tet_gradient(plain.geo.grad[t], plain.geo.tets[t], v.data());
+        const Mat3 P = strain == StrainMeasure::GreenLagrange ? green_piola(G, &Gd, law)
+                                                               : cauchy_stress(G, &Gd, law);
+        expected -= p[t] * plain.geo.volume[t] * (P * plain.geo.grad[t][plain.adj.inc_local[s]]);
+      }
+      scale = std::max(scale, expected.norm());
+      err = std::max(err, (expected - f_scaled[i]).norm());
+    }
+    EXPECT_LT(err, 1e-11 * scale) << (strain == StrainMeasure::Cauchy ? "Cauchy" : "Green");
+    double moved = 0;
+    for (int i = 0; i < plain.num_points(); ++i) moved = std::max(moved, (f_scaled[i] - f_plain[i]).norm());
+    EXPECT_GT(moved, 0.1 * scale);  // the factors did change the forces
+  }
+}
+
+// The per-tet fit's pieces: K(s, p) assembled with the factors is Σ_t p_t Σ_j s_j K_tj, whose
+// per-tet bilinear terms sum to the parts, and the level's own linear force.
+TEST(CalibratedLaw, ComponentStiffnessPerTetTermsSumToTheParts) {
+  const TetMesh mesh = jittered_box(4, 3, 2, 0.2, 15);
+  MaterialLaw law = law_with(4e5, 2e4);
+  law.strain = StrainMeasure::Cauchy;
+  std::vector<std::uint8_t> fixed(mesh.points.size(), 0);
+  for (size_t i = 0; i < mesh.points.size(); ++i) fixed[i] = mesh.points[i].x() < 1e-9;
+  const TetGeometry geo = build_tet_geometry(mesh);
+  const int n = static_cast<int>(mesh.points.size());
+  const ComponentStiffness cs = component_stiffness(geo, n, law, fixed);
+  Eigen::VectorXd a = Eigen::VectorXd::Random(cs.free_dofs());
+  Eigen::VectorXd b = Eigen::VectorXd::Random(cs.free_dofs());
+  const std::vector<ComponentValues> terms = cs.tet_terms(a, b);
+  for (int j = 0; j < 7; ++j) {
+    double sum = 0;
+    for (const ComponentValues& t : terms) sum += t[j];
+    const double whole = a.dot(cs.parts[j] * b);
+    EXPECT_NEAR(sum, whole, 1e-10 * std::abs(whole) + 1e-300) << "component " << j;
+  }
+  const std::vector<double> p = random_factors(cs.num_tets(), 16);
+  const std::array<double, 7> s = kScales.components();
+  const SparseMatrix K = cs.combined(s, p);
+  std::vector<double> ones(cs.num_tets(), 1.0);
+  EXPECT_LT((Eigen::MatrixXd(cs.combined(s, ones)) - Eigen::MatrixXd(cs.combined(s))).norm(),
+            1e-12 * Eigen::MatrixXd(cs.combined(s)).norm());
+  // ... and is the linear force of a level built with those factors.
+  law.scales = kScales;
+  law.tet_scales = std::make_shared<const std::vector<double>>(p);
+  const LevelModel m = build_level_model(mesh, law, false, fixed);
+  std::vector<Vec3> u(n, Vec3::Zero()), v(n, Vec3::Zero()), f(n);
+  for (int i = 0; i < n; ++i)
+    if (cs.dof_of_point[i] >= 0) u[i] = a.segment<3>(cs.dof_of_point[i]) * 1e-3;
+  ForceWorkspace ws;
+  internal_forces(m, u.data(), v.data(), f.data(), ws);
+  const Eigen::VectorXd Ka = K * (a * 1e-3);
+  for (int i = 0; i < n; ++i) {
+    if (cs.dof_of_point[i] < 0) continue;
+    ASSERT_LT((Ka.segment<3>(cs.dof_of_point[i]) + f[i]).norm(), 1e-10 * Ka.norm()) << i;
   }
 }
 

@@ -222,7 +222,7 @@ TEST(PackedTets, RecognisesOnlyTheListItPacked) {
   EXPECT_TRUE(packed.packs(IndexSet::of(list)));
   for (int k = 0; k < 5; ++k) {
     EXPECT_EQ(packed.tets[k], m.geo.tets[list[k]]);
-    EXPECT_EQ(packed.volume[k], m.geo.volume[list[k]]);
+    EXPECT_EQ(packed.elastic_volume[k], m.geo.elastic_volume[list[k]]);
     EXPECT_EQ(packed.order[k], k);
   }
   const std::vector<int> same_ids = list;  // equal, but another list: not recognised

@@ -119,10 +119,10 @@ def test_no_loads_no_change(binary, source, tmp):
           "compare: %s)" % (differ or r.stdout.strip().splitlines()[-1:]))
 
 
-def run_calibrated(binary, source, out, cache):
+def run_calibrated(binary, source, out, cache, kind="orthotropic"):
     r = cli.run(binary, "run", os.path.join(source, "scenarios", "beam_adaptive.yaml"), "-o", out,
                 "--set", "output.vtk=false", "--set", "time.duration=0.04",
-                "--set", "object.calibration=orthotropic",
+                "--set", "object.calibration=" + kind,
                 env=dict(os.environ, MRSIM_CACHE_DIR=cache))
     check(r.returncode == 0, "calibrated beam_adaptive runs (exit %d) %s"
           % (r.returncode, r.stderr[-200:]))
@@ -178,6 +178,39 @@ def test_calibration_logged(binary, source, tmp):
               "object.calibration: none logs no calibration")
 
 
+def test_per_tet_calibration(binary, source, tmp):
+    """object.calibration: per_tet gives each tet of a coarser beam level a factor on top of
+    the level's tensor: the console line says their range and the peaks, log.h5 has the range
+    (calibration_tet_scale_range) and the fitted peaks; the per-tet factors round-trip through
+    the cache (a second run reads them and is the same run, bit for bit), apart from the
+    level-wide fit's file."""
+    cache = os.path.join(tmp, "cache_per_tet")
+    out = os.path.join(tmp, "per_tet")
+    said = run_calibrated(binary, source, out, cache, "per_tet")
+    lines = [line for line in said.splitlines() if line.startswith("object.calibration: level")]
+    check(len(lines) == 2 and all("per-tet factors" in line and "peak z" in line for line in lines),
+          "one console line per coarser level, with its peaks and per-tet factors (%s)" % lines)
+    with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
+        levels = [h5["/levels/level_%d" % k].attrs for k in range(3)]
+        ranges = [np.asarray(levels[k]["calibration_tet_scale_range"]) for k in range(2)]
+        peak = np.asarray(levels[1]["calibration_peak_ratio_after"])
+        f1 = float(levels[1]["calibration_frequency_ratio_after"][0])
+        check("calibration_tet_scale_range" not in levels[2], "none on the finest level")
+    check(all(0 < r[0] <= r[1] for r in ranges) and ranges[1][1] <= 5.0 + 1e-9,
+          "per-tet factors positive, level 1's at most 5 (%s)" % [np.round(r, 3) for r in ranges])
+    check(np.all(np.abs(peak - 1) < 0.05) and abs(f1 - 1) < 0.05,
+          "beam L1 alone within 5 %% of L2 on its peaks (%s) and f1 (%.3f)" % (np.round(peak, 3), f1))
+    again = os.path.join(tmp, "per_tet_again")
+    check("read from the cache" in run_calibrated(binary, source, again, cache, "per_tet"),
+          "the second per_tet run reads the cache")
+    r = cli.run(binary, "compare", out, again)
+    check(r.returncode == 0, "the cached per-tet factors give the same run, bit for bit (%s)"
+          % r.stdout.strip().splitlines()[-1:])
+    other = os.path.join(tmp, "orthotropic_after_per_tet")
+    check("read from the cache" not in run_calibrated(binary, source, other, cache),
+          "the level-wide fit does not read the per-tet fit's file")
+
+
 def main():
     args = cli.parse_args()
     if args is None:
@@ -188,6 +221,7 @@ def main():
         test_load_ramp(args.binary, args.source, tmp)
         test_no_loads_no_change(args.binary, args.source, tmp)
         test_calibration_logged(args.binary, args.source, tmp)
+        test_per_tet_calibration(args.binary, args.source, tmp)
     return cli.report()
 
 
