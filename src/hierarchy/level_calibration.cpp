@@ -3,7 +3,6 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 #include "core/error.hpp"
 #include "physics/component_stiffness.hpp"
@@ -68,83 +67,94 @@ void tet_derivatives(const ComponentStiffness& cs, const Params& s, const std::v
   }
 }
 
-Response respond(const ComponentStiffness& cs, const Vector& x, bool held, int rigid) {
-  const Params s = factors(x);
-  const bool per_tet = x.size() > 7;
-  const std::vector<double> p = per_tet ? tet_factors(x) : std::vector<double>{};
-  const SparseMatrix K = per_tet ? cs.combined(s, p) : cs.combined(s);
+// A held level's K factorised: LDLᵀ succeeds on a singular K (a zero pivot is just small), and
+// a level held at collinear points still turns about their line, so the pivots are checked
+// against the largest.
+void factorise_held(SparseLdlt& solver, const SparseMatrix& K) {
+  solver.compute(K);
+  const Vector d = solver.vectorD();
+  if (solver.info() != Eigen::Success || !(d.minCoeff() > 1e-10 * d.maxCoeff()))
+    throw InputError(
+        "object.calibration: a level's fixed points do not hold it (collinear or too few: "
+        "it can still move rigidly); fix points that span a plane, or none (a free body)");
+}
+
+// The static rows of a held level under unit gravity along x, y, z: its sags, then (per_tet)
+// its largest displacements.
+void static_rows(const ComponentStiffness& cs, const SparseLdlt& solver, const Params& s,
+                 const std::vector<double>& p, Response& r) {
   const int n = cs.free_dofs();
-  std::vector<Vector> loads;  // M e_d
-  if (held)
-    for (int d = 0; d < 3; ++d) {
-      Vector f = Vector::Zero(n);
-      for (int i = d; i < n; i += 3) f[i] = cs.mass[i];
-      loads.push_back(f);
+  const bool per_tet = !p.empty();
+  for (int d = 0; d < 3; ++d) {
+    Vector f = Vector::Zero(n);  // M e_d
+    for (int i = d; i < n; i += 3) f[i] = cs.mass[i];
+    // The mass-weighted mean displacement along the load, f·u / Σm: what a sag is, on a
+    // level whose mass differs from the finest one's (independent meshes of one surface).
+    const Vector u = solver.solve(f);
+    const double c = f.dot(u);
+    r.sag.push_back(c / f.sum());
+    r.value[d] = std::log(c / f.sum());
+    if (per_tet)
+      tet_derivatives(cs, s, p, u, u, -1 / c, r.jacobian.row(d));
+    else
+      for (int j = 0; j < 7; ++j) r.jacobian(d, j) = -s[j] * u.dot(cs.parts[j] * u) / c;
+    // The largest displacement (a beam's tip): reported by the level-wide fit, not fitted (on
+    // the liver it sits on a thin lobe the coarse surfaces do not have, and one tensor for
+    // the whole level could not follow it); per_tet fits it too.
+    double peak = 0;
+    int at = 0;
+    for (int i = 0; i + 2 < n; i += 3) {
+      const double norm = u.segment<3>(i).norm();
+      if (norm > peak) peak = norm, at = i;
     }
-  const int statics = static_cast<int>(loads.size()) * (per_tet ? 2 : 1);
-  const int rows = statics + kModes;
-  Response r;
-  r.value.resize(rows);
-  r.jacobian.resize(rows, x.size());
-  // A held level's K is positive definite: one factorisation serves the static solves and,
-  // unshifted, the modes. A free one is shifted below its rigid modes (lowest_modes()).
-  std::optional<SparseLdlt> solver;
-  if (held) {
-    solver.emplace(K);
-    // LDLᵀ succeeds on a singular K (a zero pivot is just small): a level held at collinear
-    // points still turns about their line, so the pivots are checked against the largest.
-    const Vector d = solver->vectorD();
-    if (solver->info() != Eigen::Success || !(d.minCoeff() > 1e-10 * d.maxCoeff()))
-      throw InputError(
-          "object.calibration: a level's fixed points do not hold it (collinear or too few: "
-          "it can still move rigidly); fix points that span a plane, or none (a free body)");
-    for (size_t d = 0; d < loads.size(); ++d) {
-      // The mass-weighted mean displacement along the load, f·u / Σm: what a sag is, on a
-      // level whose mass differs from the finest one's (independent meshes of one surface).
-      const Vector u = solver->solve(loads[d]);
-      const double c = loads[d].dot(u);
-      r.sag.push_back(c / loads[d].sum());
-      r.value[d] = std::log(c / loads[d].sum());
-      if (per_tet)
-        tet_derivatives(cs, s, p, u, u, -1 / c, r.jacobian.row(d));
-      else
-        for (int j = 0; j < 7; ++j) r.jacobian(d, j) = -s[j] * u.dot(cs.parts[j] * u) / c;
-      // The largest displacement (a beam's tip): reported by the level-wide fit, not fitted (on
-      // the liver it sits on a thin lobe the coarse surfaces do not have, and one tensor for
-      // the whole level could not follow it); per_tet fits it too.
-      double peak = 0;
-      int at = 0;
-      for (int i = 0; i + 2 < n; i += 3) {
-        const double norm = u.segment<3>(i).norm();
-        if (norm > peak) peak = norm, at = i;
-      }
-      r.peak.push_back(peak);
-      if (per_tet) {
-        // ∂|u_P| = (u_P/|u_P|)·∂u = −aᵀ ∂K u with K a = the unit vector at P (the adjoint).
-        const int row = static_cast<int>(loads.size() + d);
-        Vector e = Vector::Zero(n);
-        e.segment<3>(at) = u.segment<3>(at) / peak;
-        const Vector a = solver->solve(e);
-        r.value[row] = std::log(peak);
-        tet_derivatives(cs, s, p, a, u, -1 / peak, r.jacobian.row(row));
-      }
+    r.peak.push_back(peak);
+    if (per_tet) {
+      // ∂|u_P| = (u_P/|u_P|)·∂u = −aᵀ ∂K u with K a = the unit vector at P (the adjoint).
+      Vector e = Vector::Zero(n);
+      e.segment<3>(at) = u.segment<3>(at) / peak;
+      const Vector a = solver.solve(e);
+      r.value[3 + d] = std::log(peak);
+      tet_derivatives(cs, s, p, a, u, -1 / peak, r.jacobian.row(3 + d));
     }
   }
-  const Modes modes = held ? lowest_modes(*solver, 0.0, cs.mass, rigid + kModes)
-                           : lowest_modes(K, cs.mass, rigid + kModes);
+}
+
+// The weighted log ω rows of the fitted modes, from row `first` on.
+void mode_rows(const ComponentStiffness& cs, const Modes& modes, int rigid, int first,
+               const Params& s, const std::vector<double>& p, Response& r) {
   for (int k = 0; k < kModes; ++k) {
     const int m = std::min<int>(rigid + k, static_cast<int>(modes.omega2.size()) - 1);
     const double w2 = std::max(modes.omega2[m], 1e-300);
     const Vector phi = modes.shapes.col(m);
     r.omega.push_back(std::sqrt(w2));
     const double weight = kModeWeight[k];
-    r.value[statics + k] = weight * 0.5 * std::log(w2);
-    if (per_tet)
-      tet_derivatives(cs, s, p, phi, phi, weight / (2 * w2), r.jacobian.row(statics + k));
+    r.value[first + k] = weight * 0.5 * std::log(w2);
+    if (!p.empty())
+      tet_derivatives(cs, s, p, phi, phi, weight / (2 * w2), r.jacobian.row(first + k));
     else
       for (int j = 0; j < 7; ++j)
-        r.jacobian(statics + k, j) = weight * s[j] * phi.dot(cs.parts[j] * phi) / (2 * w2);
+        r.jacobian(first + k, j) = weight * s[j] * phi.dot(cs.parts[j] * phi) / (2 * w2);
   }
+}
+
+Response respond(const ComponentStiffness& cs, const Vector& x, bool held, int rigid) {
+  const Params s = factors(x);
+  const bool per_tet = x.size() > 7;
+  const std::vector<double> p = per_tet ? tet_factors(x) : std::vector<double>{};
+  const SparseMatrix K = per_tet ? cs.combined(s, p) : cs.combined(s);
+  const int statics = held ? (per_tet ? 6 : 3) : 0;
+  Response r;
+  r.value.resize(statics + kModes);
+  r.jacobian.resize(statics + kModes, x.size());
+  if (!held) {  // shifted below its rigid modes (lowest_modes())
+    mode_rows(cs, lowest_modes(K, cs.mass, rigid + kModes), rigid, statics, s, p, r);
+    return r;
+  }
+  // Positive definite: one factorisation serves the static solves and, unshifted, the modes.
+  SparseLdlt solver;
+  factorise_held(solver, K);
+  static_rows(cs, solver, s, p, r);
+  mode_rows(cs, lowest_modes(solver, 0.0, cs.mass, rigid + kModes), rigid, statics, s, p, r);
   return r;
 }
 
