@@ -27,7 +27,8 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 # Curves named like these are references (dashed); the others are measured (solid).
 REFERENCE_WORDS = ("reference", "calculix", "hertz", "boussinesq", "static", "analytic",
                    "predict", "exact")
-GROUP_ORDER = ["Beam", "Beam levels: first bending frequency", "Damping", "Waves",
+GROUP_ORDER = ["Beam", "Beam levels: first bending frequency", "Levels alone (calibrated)",
+               "Damping", "Waves",
                "Uniaxial compression (patch test)", "Free body", "Indentation",
                "Adaptive vs uniform"]
 
