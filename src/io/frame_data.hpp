@@ -31,6 +31,9 @@ struct LevelFrameView {
   // Per tet: the level that simulates most of it (cell array `simulated_by`; on the finest level
   // block, coloured by it, the object shows once, each part by its level). Empty: not written.
   std::span<const std::int8_t> simulated_by = {};
+  // Per tet: the factor object.calibration: per_tet gives it on the level's tensor (cell array
+  // `calibration_scale`; docs/hierarchy.md "Per-tet factors"). Empty: not written.
+  std::span<const double> calibration_scale = {};
 };
 
 /// The object's skin (the VTU `surface` block): a triangle surface moved by the levels.

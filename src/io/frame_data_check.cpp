@@ -46,6 +46,8 @@ void check_level_view(const LevelFrameView& view, int level) {
     check_size(view.simulated.size(), view.mesh->tets.size(), where, "simulated");
   if (!view.simulated_by.empty())
     check_size(view.simulated_by.size(), view.mesh->tets.size(), where, "simulated_by");
+  if (!view.calibration_scale.empty())
+    check_size(view.calibration_scale.size(), view.mesh->tets.size(), where, "calibration_scale");
 }
 
 void check_surface_view(const SurfaceFrameView& surface) {

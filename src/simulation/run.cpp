@@ -293,6 +293,7 @@ class FrameWriter {
       if (coverage_changed) fill_simulated(l);
       v.simulated = simulated_[l];
       v.simulated_by = simulated_by_[l];
+      if (const auto& scales = sim_.model(l).law.tet_scales) v.calibration_scale = *scales;
     }
     if (const SkinContact* c = sim_.contact()) {
       sim_.skin_state(skin_u_, skin_v_);

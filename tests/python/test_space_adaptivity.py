@@ -13,6 +13,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import test_cli_run as cli  # noqa: E402  (shared helpers: run, check, parse_args, report)
+from test_tool_scenarios import blocks  # noqa: E402  (a frame's blocks by name)
 
 check = cli.check
 
@@ -119,9 +120,9 @@ def test_no_loads_no_change(binary, source, tmp):
           "compare: %s)" % (differ or r.stdout.strip().splitlines()[-1:]))
 
 
-def run_calibrated(binary, source, out, cache, kind="orthotropic"):
+def run_calibrated(binary, source, out, cache, kind="orthotropic", vtk=False):
     r = cli.run(binary, "run", os.path.join(source, "scenarios", "beam_adaptive.yaml"), "-o", out,
-                "--set", "output.vtk=false", "--set", "time.duration=0.04",
+                "--set", "output.vtk=%s" % str(vtk).lower(), "--set", "time.duration=0.04",
                 "--set", "object.calibration=" + kind,
                 env=dict(os.environ, MRSIM_CACHE_DIR=cache))
     check(r.returncode == 0, "calibrated beam_adaptive runs (exit %d) %s"
@@ -181,12 +182,13 @@ def test_calibration_logged(binary, source, tmp):
 def test_per_tet_calibration(binary, source, tmp):
     """object.calibration: per_tet gives each tet of a coarser beam level a factor on top of
     the level's tensor: the console line says their range and the peaks, log.h5 has the range
-    (calibration_tet_scale_range) and the fitted peaks; the per-tet factors round-trip through
-    the cache (a second run reads them and is the same run, bit for bit), apart from the
-    level-wide fit's file."""
+    (calibration_tet_scale_range) and the fitted peaks, the frames a `calibration_scale` cell
+    array on the coarser level blocks; the per-tet factors round-trip through the cache (a
+    second run reads them and is the same run, bit for bit), apart from the level-wide fit's
+    file."""
     cache = os.path.join(tmp, "cache_per_tet")
     out = os.path.join(tmp, "per_tet")
-    said = run_calibrated(binary, source, out, cache, "per_tet")
+    said = run_calibrated(binary, source, out, cache, "per_tet", vtk=True)
     lines = [line for line in said.splitlines() if line.startswith("object.calibration: level")]
     check(len(lines) == 2 and all("per-tet factors" in line and "peak z" in line for line in lines),
           "one console line per coarser level, with its peaks and per-tet factors (%s)" % lines)
@@ -200,15 +202,26 @@ def test_per_tet_calibration(binary, source, tmp):
           "per-tet factors positive, level 1's at most 5 (%s)" % [np.round(r, 3) for r in ranges])
     check(np.all(np.abs(peak - 1) < 0.05) and abs(f1 - 1) < 0.05,
           "beam L1 alone within 5 %% of L2 on its peaks (%s) and f1 (%.3f)" % (np.round(peak, 3), f1))
+    frame = blocks(os.path.join(out, "frames", "frame_000001.vtm"))
+    cells = [frame["level_%d" % k][1].get("cell:calibration_scale") for k in range(3)]
+    check(all(c is not None for c in cells[:2]) and cells[2] is None
+          and all(len(cells[k]) == frame["level_%d" % k][2].GetNumberOfCells() for k in range(2))
+          and all(np.isclose(cells[k].min(), ranges[k][0]) and np.isclose(cells[k].max(), ranges[k][1])
+                  for k in range(2)),
+          "the frames carry each coarser level's factors per tet (calibration_scale), none on "
+          "the finest level")
     again = os.path.join(tmp, "per_tet_again")
-    check("read from the cache" in run_calibrated(binary, source, again, cache, "per_tet"),
+    check("read from the cache" in run_calibrated(binary, source, again, cache, "per_tet", vtk=True),
           "the second per_tet run reads the cache")
     r = cli.run(binary, "compare", out, again)
     check(r.returncode == 0, "the cached per-tet factors give the same run, bit for bit (%s)"
           % r.stdout.strip().splitlines()[-1:])
     other = os.path.join(tmp, "orthotropic_after_per_tet")
-    check("read from the cache" not in run_calibrated(binary, source, other, cache),
+    check("read from the cache" not in run_calibrated(binary, source, other, cache, vtk=True),
           "the level-wide fit does not read the per-tet fit's file")
+    frame = blocks(os.path.join(other, "frames", "frame_000001.vtm"))
+    check("cell:calibration_scale" not in frame["level_0"][1],
+          "orthotropic frames have no calibration_scale")
 
 
 def main():
