@@ -84,6 +84,13 @@ def test_split_checks(binary, source, tmp):
     # difference is then the end's, where the still beam's tip region has coarsened.
     whole = np.abs(b - ref).max() / peak
     check(whole <= 0.2, "over 1 s, every frame within %.3f of beam_L2 alone's peak (<= 0.2)" % whole)
+    # With a factor per tet the frame-end decisions alone keep the band (docs/hierarchy.md
+    # "Per-tet factors": 0.17; orthotropic at frame ends 0.20, uncalibrated 0.68).
+    per_tet = [s.replace("orthotropic", "per_tet") for s in sets]
+    _, _, _, out_pt = run(binary, source, tmp, "beam_adaptive.yaml", "beam_per_tet", per_tet)
+    whole = np.abs(ce.curve(out_pt, select) - ref).max() / peak
+    check(whole <= 0.2, "per_tet, decisions at frame ends: every frame within %.3f of beam_L2 "
+          "alone's peak (<= 0.2)" % whole)
     if saved is None:
         del os.environ["MRSIM_CACHE_DIR"]
     else:
