@@ -27,9 +27,12 @@ levels:
     scripts/stability_matrix.py [--binary build/mrsim] [--work build/stability]
                                 [--cases NAME...] [--integrators NAME...] [--psi given|VALUE...]
                                 [--time-levels off|on...] [--duration S] [--quick] [--table FILE]
+                                [--set KEY=VALUE ...]
 
 --quick: the beam cases, two integrators, shortened runs (what ctest runs, py.test_stability).
 --table: write the markdown table there (docs/integrators.md quotes it).
+--set: a scenario override for every run of every row (before the row's own), e.g.
+       --set object.calibration=per_tet to measure the matrix on calibrated levels.
 Exit status: 0 when every automatic run finished and every ratio is in the band, 1 otherwise.
 Generated meshes (mrsim mesh on the bundled liver surface) are cached in --work.
 """
@@ -139,11 +142,14 @@ def settings(integrator, psi, time_levels):
     return s
 
 
+EXTRA_SETS = []  # --set: overrides for every run, before each row's own
+
+
 def mrsim(binary, command, scenario, sets, out=None, keep=False):
     args = [str(binary), command, str(scenario)]
     if out is not None:
         args += ["-o", str(out), "--quiet"]
-    for s in sets:
+    for s in EXTRA_SETS + sets:
         args += ["--set", s]
     t0 = time.time()
     r = subprocess.run(args, capture_output=True, text=True)
@@ -368,7 +374,10 @@ def main():
                     help="time levels: measure on up to this many ladders frame_dt x 2^(j/n) "
                          "(the next while the smallest limit is above 2.5) and keep the "
                          "smallest (default %d; --quick: 1)" % LADDER_SHIFTS)
+    ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                    help="a scenario override for every run (repeatable)")
     args = ap.parse_args()
+    EXTRA_SETS.extend(args.set)
     binary = pathlib.Path(args.binary).resolve()
     work = pathlib.Path(args.work).resolve()
     work.mkdir(parents=True, exist_ok=True)
