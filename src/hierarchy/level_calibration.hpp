@@ -34,6 +34,10 @@ struct LevelCalibration {
   // fitted by PerTet only) and the six lowest frequencies.
   std::vector<double> sag_before, sag_after, peak_before, peak_after;
   std::vector<double> frequency_before, frequency_after;
+  // PerTet, held bodies: the compliance under each local load (hierarchy/calibration_loads.hpp)
+  // over the finest level's; fitted only when `local_fitted` (the global targets held with it).
+  std::vector<double> local_before, local_after;
+  bool local_fitted = false;
   int iterations = 0;
 };
 
@@ -50,7 +54,9 @@ inline constexpr CalibrationRatios kCalibrationRatios[] = {
     {"peak", "before", &LevelCalibration::peak_before},
     {"peak", "after", &LevelCalibration::peak_after},
     {"frequency", "before", &LevelCalibration::frequency_before},
-    {"frequency", "after", &LevelCalibration::frequency_after}};
+    {"frequency", "after", &LevelCalibration::frequency_after},
+    {"local", "before", &LevelCalibration::local_before},
+    {"local", "after", &LevelCalibration::local_after}};
 
 /// One entry per level, the last (finest) one uncalibrated. `fixed`: per level, one flag per
 /// point (as HierarchySetup::fixed). Every level must be held at three points or more, or none

@@ -11,7 +11,7 @@ namespace mrsim {
 namespace {
 
 // Bumped whenever the fit (targets, weights, pull, stopping) changes what it returns.
-constexpr int kFitVersion = 1;
+constexpr int kFitVersion = 2;  // 2: per_tet's local loads
 
 std::filesystem::path file_of(const std::filesystem::path& dir, const std::string& key) {
   return dir / ("level_calibration_" + key + ".json");
@@ -20,6 +20,7 @@ std::filesystem::path file_of(const std::filesystem::path& dir, const std::strin
 nlohmann::json to_json(const LevelCalibration& c) {
   nlohmann::json j = {{"scales", c.scales.components()}, {"iterations", c.iterations}};
   if (!c.tet_scales.empty()) j["tet_scales"] = c.tet_scales;
+  j["local_fitted"] = c.local_fitted;
   for (const CalibrationRatios& r : kCalibrationRatios)
     j[std::string(r.quantity) + "_" + r.when] = c.*r.member;
   return j;
@@ -39,6 +40,7 @@ LevelCalibration from_json(const nlohmann::json& j) {
   for (const CalibrationRatios& r : kCalibrationRatios)
     c.*r.member = j.at(std::string(r.quantity) + "_" + r.when).get<std::vector<double>>();
   c.iterations = j.at("iterations").get<int>();
+  c.local_fitted = j.at("local_fitted").get<bool>();
   return c;
 }
 

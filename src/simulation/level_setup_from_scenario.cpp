@@ -47,6 +47,17 @@ std::string calibration_line(int level, const LevelCalibration& c) {
     const auto [low, high] = std::minmax_element(c.tet_scales.begin(), c.tet_scales.end());
     os << "; per-tet factors " << *low << " to " << *high;
   }
+  if (!c.local_after.empty()) {
+    auto range = [&os](const std::vector<double>& r) {
+      const auto [low, high] = std::minmax_element(r.begin(), r.end());
+      os << *low << '-' << *high;
+    };
+    os << "; local loads ";
+    range(c.local_before);
+    os << " -> ";
+    range(c.local_after);
+    os << (c.local_fitted ? " (fitted)" : " (not fitted: the level's sags, peaks or f1 would move)");
+  }
   return os.str();
 }
 

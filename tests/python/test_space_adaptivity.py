@@ -203,12 +203,15 @@ def test_per_tet_calibration(binary, source, tmp):
         levels = [h5["/levels/level_%d" % k].attrs for k in range(3)]
         ranges = [np.asarray(levels[k]["calibration_tet_scale_range"]) for k in range(2)]
         peak = np.asarray(levels[1]["calibration_peak_ratio_after"])
+        local = np.asarray(levels[1]["calibration_local_ratio_after"])
         f1 = float(levels[1]["calibration_frequency_ratio_after"][0])
         check("calibration_tet_scale_range" not in levels[2], "none on the finest level")
     check(all(0 < r[0] <= r[1] for r in ranges) and ranges[1][1] <= 5.0 + 1e-9,
           "per-tet factors positive, level 1's at most 5 (%s)" % [np.round(r, 3) for r in ranges])
     check(np.all(np.abs(peak - 1) < 0.05) and abs(f1 - 1) < 0.05,
           "beam L1 alone within 5 %% of L2 on its peaks (%s) and f1 (%.3f)" % (np.round(peak, 3), f1))
+    check(len(local) == 12 and np.all(np.abs(local - 1) < 0.05),
+          "beam L1 alone within 5 %% of L2 under its twelve local loads (%s)" % np.round(local, 3))
     frame = blocks(os.path.join(out, "frames", "frame_000001.vtm"))
     cells = [frame["level_%d" % k][1].get("cell:calibration_scale") for k in range(3)]
     check(all(c is not None for c in cells[:2]) and cells[2] is None

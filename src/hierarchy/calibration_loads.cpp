@@ -1,0 +1,62 @@
+#include "hierarchy/calibration_loads.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "hierarchy/tet_locator.hpp"
+#include "mesh/boundary_faces.hpp"
+
+namespace mrsim {
+
+std::vector<LocalLoad> local_loads(const TetMesh& finest, const std::vector<std::uint8_t>& fixed,
+                                   int count, double radius) {
+  // Area-weighted outward normals of the free boundary points.
+  std::vector<Vec3> normal(finest.points.size(), Vec3::Zero());
+  for (const Face& f : boundary_faces(finest)) {
+    const Vec3& a = finest.points[f[0]];
+    const Vec3 n = (finest.points[f[1]] - a).cross(finest.points[f[2]] - a);
+    for (int v : f) normal[v] += n;
+  }
+  std::vector<int> free;
+  for (std::size_t i = 0; i < normal.size(); ++i)
+    if (normal[i].squaredNorm() > 0 && (fixed.empty() || !fixed[i])) free.push_back(static_cast<int>(i));
+  std::vector<LocalLoad> loads;
+  if (free.empty()) return loads;
+  // Farthest-point sampling from the highest point: spread over the surface, deterministic.
+  std::vector<double> gap(free.size(), std::numeric_limits<double>::infinity());
+  int next = *std::max_element(free.begin(), free.end(), [&](int a, int b) {
+    return finest.points[a].z() < finest.points[b].z() || (finest.points[a].z() == finest.points[b].z() && a > b);
+  });
+  for (int k = 0; k < count && k < static_cast<int>(free.size()); ++k) {
+    const Vec3& c = finest.points[next];
+    LocalLoad load;
+    for (int i : free)
+      if ((finest.points[i] - c).norm() <= radius) load.points.push_back(i);
+    load.force = -normal[next].normalized() / static_cast<double>(load.points.size());
+    loads.push_back(std::move(load));
+    std::size_t far = 0;
+    for (std::size_t j = 0; j < free.size(); ++j) {
+      gap[j] = std::min(gap[j], (finest.points[free[j]] - c).norm());
+      if (gap[j] > gap[far]) far = j;
+    }
+    if (!(gap[far] > 0)) break;
+    next = free[far];
+  }
+  return loads;
+}
+
+Eigen::VectorXd level_load(const LocalLoad& load, const TetMesh& finest, const TetMesh& level) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * static_cast<Eigen::Index>(level.points.size()));
+  if (&level == &finest) {
+    for (int i : load.points) f.segment<3>(3 * i) += load.force;
+    return f;
+  }
+  const TetLocator locator(level);
+  for (int i : load.points) {
+    const TetLocation at = locator.locate(finest.points[i]);
+    for (int a = 0; a < 4; ++a) f.segment<3>(3 * level.tets[at.tet][a]) += at.bary[a] * load.force;
+  }
+  return f;
+}
+
+}  // namespace mrsim

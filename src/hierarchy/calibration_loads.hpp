@@ -1,0 +1,32 @@
+#pragma once
+// Local loads of the per-tet calibration (hierarchy/level_calibration.hpp, docs/hierarchy.md
+// "Per-tet factors"): a tool or a press acts on a few finest surface points, and in the
+// hierarchy their forces reach a coarse level through the barycentric weights of those points
+// in its tets (ghost force transfer, method.md §4.1). So each load is a unit force spread
+// evenly over the finest level's free boundary points within `radius` of a centre, pushing
+// inwards; a coarse level receives it through its located weights, and its compliance fᵀK⁻¹f
+// is compared with the finest level's own. Centres: the highest free boundary point, then each
+// next the one farthest from those chosen.
+#include <Eigen/Dense>
+#include <cstdint>
+#include <vector>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace mrsim {
+
+struct LocalLoad {
+  std::vector<int> points;  // finest boundary points, not held
+  Vec3 force;               // N on each of them (their sum is a unit force)
+};
+
+/// Up to `count` loads (fewer when the free boundary has fewer points).
+std::vector<LocalLoad> local_loads(const TetMesh& finest, const std::vector<std::uint8_t>& fixed,
+                                   int count, double radius);
+
+/// The load as nodal forces of `level` (3 per point, fixed points included): each finest
+/// point's force spread on the tet of `level` that holds it (or the nearest, extrapolated), by
+/// its barycentric weights. On the finest level itself, the forces at its points.
+Eigen::VectorXd level_load(const LocalLoad& load, const TetMesh& finest, const TetMesh& level);
+
+}  // namespace mrsim
