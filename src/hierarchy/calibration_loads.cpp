@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 #include "hierarchy/tet_locator.hpp"
 #include "mesh/boundary_faces.hpp"
@@ -45,18 +46,26 @@ std::vector<LocalLoad> local_loads(const TetMesh& finest, const std::vector<std:
   return loads;
 }
 
-Eigen::VectorXd level_load(const LocalLoad& load, const TetMesh& finest, const TetMesh& level) {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * static_cast<Eigen::Index>(level.points.size()));
-  if (&level == &finest) {
-    for (int i : load.points) f.segment<3>(3 * i) += load.force;
-    return f;
+std::vector<Eigen::VectorXd> level_loads(const std::vector<LocalLoad>& loads,
+                                         const TetMesh& finest, const TetMesh& level) {
+  std::vector<Eigen::VectorXd> out;
+  if (loads.empty()) return out;
+  const bool same = &level == &finest;
+  const std::optional<TetLocator> locator =
+      same ? std::nullopt : std::optional<TetLocator>(std::in_place, level);
+  for (const LocalLoad& load : loads) {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * static_cast<Eigen::Index>(level.points.size()));
+    for (int i : load.points) {
+      if (same) {
+        f.segment<3>(3 * i) += load.force;
+        continue;
+      }
+      const TetLocation at = locator->locate(finest.points[i]);
+      for (int a = 0; a < 4; ++a) f.segment<3>(3 * level.tets[at.tet][a]) += at.bary[a] * load.force;
+    }
+    out.push_back(std::move(f));
   }
-  const TetLocator locator(level);
-  for (int i : load.points) {
-    const TetLocation at = locator.locate(finest.points[i]);
-    for (int a = 0; a < 4; ++a) f.segment<3>(3 * level.tets[at.tet][a]) += at.bary[a] * load.force;
-  }
-  return f;
+  return out;
 }
 
 }  // namespace mrsim

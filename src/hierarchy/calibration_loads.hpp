@@ -24,9 +24,10 @@ struct LocalLoad {
 std::vector<LocalLoad> local_loads(const TetMesh& finest, const std::vector<std::uint8_t>& fixed,
                                    int count, double radius);
 
-/// The load as nodal forces of `level` (3 per point, fixed points included): each finest
+/// Each load as nodal forces of `level` (3 per point, fixed points included): each finest
 /// point's force spread on the tet of `level` that holds it (or the nearest, extrapolated), by
 /// its barycentric weights. On the finest level itself, the forces at its points.
-Eigen::VectorXd level_load(const LocalLoad& load, const TetMesh& finest, const TetMesh& level);
+std::vector<Eigen::VectorXd> level_loads(const std::vector<LocalLoad>& loads,
+                                         const TetMesh& finest, const TetMesh& level);
 
 }  // namespace mrsim

@@ -321,8 +321,7 @@ LevelCalibration fit(const ComponentStiffness& cs, const Response& target, Calib
 std::vector<Vector> free_loads(const std::vector<LocalLoad>& loads, const TetMesh& finest,
                                const TetMesh& level, const ComponentStiffness& cs) {
   std::vector<Vector> out;
-  for (const LocalLoad& load : loads) {
-    const Vector f = level_load(load, finest, level);
+  for (const Vector& f : level_loads(loads, finest, level)) {
     Vector free = Vector::Zero(cs.free_dofs());
     for (std::size_t i = 0; i < cs.dof_of_point.size(); ++i)
       if (cs.dof_of_point[i] >= 0)

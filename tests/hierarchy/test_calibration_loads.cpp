@@ -47,8 +47,13 @@ TEST(CalibrationLoads, PatchesOfFreeBoundaryPointsPushingInwards) {
 TEST(CalibrationLoads, ACoarseLevelReceivesTheForceAndItsMoment) {
   const TetMesh fine = make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.02, 0.02), 20, 4, 4);
   const TetMesh coarse = make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.02, 0.02), 5, 1, 1);
-  for (const LocalLoad& l : local_loads(fine, held_at_x0(fine), 12, 0.006)) {
-    const Eigen::VectorXd f = level_load(l, fine, fine), g = level_load(l, fine, coarse);
+  const std::vector<LocalLoad> loads = local_loads(fine, held_at_x0(fine), 12, 0.006);
+  const std::vector<Eigen::VectorXd> own = level_loads(loads, fine, fine);
+  const std::vector<Eigen::VectorXd> passed = level_loads(loads, fine, coarse);
+  ASSERT_EQ(passed.size(), loads.size());
+  for (std::size_t k = 0; k < loads.size(); ++k) {
+    const Eigen::VectorXd& f = own[k];
+    const Eigen::VectorXd& g = passed[k];
     ASSERT_EQ(g.size(), 3 * static_cast<Eigen::Index>(coarse.points.size()));
     auto resultant = [](const Eigen::VectorXd& v, const TetMesh& m) {
       Vec3 F = Vec3::Zero(), T = Vec3::Zero();
