@@ -331,12 +331,6 @@ std::vector<Vector> free_loads(const std::vector<LocalLoad>& loads, const TetMes
   return out;
 }
 
-double diagonal(const TetMesh& mesh) {
-  Vec3 lo = mesh.points.front(), hi = lo;
-  for (const Vec3& p : mesh.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  return (hi - lo).norm();
-}
-
 int held_points(const std::vector<std::uint8_t>& fixed) {
   return static_cast<int>(std::count(fixed.begin(), fixed.end(), 1));
 }
@@ -376,7 +370,7 @@ std::vector<LevelCalibration> calibrate_levels(
   const TetMesh& fine = *meshes[levels - 1];
   std::vector<LocalLoad> loads;
   if (kind == CalibrationKind::PerTet && held)
-    loads = local_loads(fine, fixed[levels - 1], kLocalLoads, kLocalRadius * diagonal(fine));
+    loads = local_loads(fine, fixed[levels - 1], kLocalLoads, kLocalRadius * bbox_diagonal(fine));
   Vector at_law = Vector::Zero(kind == CalibrationKind::PerTet ? 7 + finest.num_tets() : 7);
   const Response target =
       respond(finest, at_law, held, rigid, free_loads(loads, fine, fine, finest));

@@ -18,4 +18,7 @@ struct TetMesh {
 /// Signed volume of a tet: positive when the vertices are ordered as mrsim expects.
 double signed_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
+/// Length of the diagonal of the points' axis-aligned bounding box (m); the mesh has points.
+double bbox_diagonal(const TetMesh& mesh);
+
 }  // namespace mrsim

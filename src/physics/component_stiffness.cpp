@@ -6,20 +6,37 @@ namespace mrsim {
 
 namespace {
 
-// λ and μ[p][q] of the tensor with factor 1 on component j and 0 on the others.
-struct ComponentTensor {
-  double lambda;
-  double mu[3][3];
-};
-
-ComponentTensor component_tensor(int j, double lambda, double mu) {
+// The tensor with factor 1 on component j and 0 on the others.
+OrthotropicTensor component_tensor(int j, double lambda, double mu) {
   std::array<double, 7> unit{};
   unit[j] = 1;
-  const StiffnessScales only = StiffnessScales::from_components(unit);
-  ComponentTensor c{lambda * only.lambda, {}};
-  for (int p = 0; p < 3; ++p)
-    for (int q = 0; q < 3; ++q) c.mu[p][q] = mu * only.mu[3 * p + q];
-  return c;
+  return orthotropic_tensor(lambda, mu, StiffnessScales::from_components(unit));
+}
+
+// Σ_t V_t (p_t) Bᵀ C B over the free DoFs of `cs` (`tet_scales` null: no p_t). Every entry is
+// stored, zeros included, so that matrices of one level share one pattern.
+SparseMatrix assemble(const ComponentStiffness& cs, const OrthotropicTensor& c,
+                      const std::vector<double>* tet_scales) {
+  const TetGeometry& geo = cs.geo;
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(geo.tets.size() * 144);
+  for (int t = 0; t < cs.num_tets(); ++t) {
+    const double V = tet_scales ? geo.volume[t] * (*tet_scales)[t] : geo.volume[t];
+    for (int a = 0; a < 4; ++a) {
+      const int da = cs.dof_of_point[geo.tets[t][a]];
+      if (da < 0) continue;
+      for (int b = 0; b < 4; ++b) {
+        const int db = cs.dof_of_point[geo.tets[t][b]];
+        if (db < 0) continue;
+        const Mat3 k = orthotropic_block(geo.grad[t][a], geo.grad[t][b], V, c.lambda, c.mu);
+        for (int p = 0; p < 3; ++p)
+          for (int r = 0; r < 3; ++r) entries.emplace_back(da + p, db + r, k(p, r));
+      }
+    }
+  }
+  SparseMatrix out(cs.free_dofs(), cs.free_dofs());
+  out.setFromTriplets(entries.begin(), entries.end());
+  return out;
 }
 
 // The free-DoF field `x` of tet t's vertices (fixed points: zero) as its strain ε = sym(∇x).
@@ -43,29 +60,8 @@ SparseMatrix ComponentStiffness::combined(const std::array<double, 7>& scales) c
 SparseMatrix ComponentStiffness::combined(const std::array<double, 7>& scales,
                                           const std::vector<double>& tet_scales) const {
   // One tensor: the orthotropic block of K_tj summed with the factors, per tet times p_t.
-  const StiffnessScales s = StiffnessScales::from_components(scales);
-  const double lam = lambda * s.lambda;
-  double m[3][3];
-  for (int p = 0; p < 3; ++p)
-    for (int q = 0; q < 3; ++q) m[p][q] = mu * s.mu[3 * p + q];
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(geo.tets.size() * 144);
-  for (int t = 0; t < num_tets(); ++t)
-    for (int a = 0; a < 4; ++a) {
-      const int da = dof_of_point[geo.tets[t][a]];
-      if (da < 0) continue;
-      for (int b = 0; b < 4; ++b) {
-        const int db = dof_of_point[geo.tets[t][b]];
-        if (db < 0) continue;
-        const Mat3 k = orthotropic_block(geo.grad[t][a], geo.grad[t][b],
-                                         geo.volume[t] * tet_scales[t], lam, m);
-        for (int p = 0; p < 3; ++p)
-          for (int r = 0; r < 3; ++r) entries.emplace_back(da + p, db + r, k(p, r));
-      }
-    }
-  SparseMatrix out(free_dofs(), free_dofs());
-  out.setFromTriplets(entries.begin(), entries.end());
-  return out;
+  return assemble(*this, orthotropic_tensor(lambda, mu, StiffnessScales::from_components(scales)),
+                  &tet_scales);
 }
 
 std::vector<ComponentValues> ComponentStiffness::tet_terms(const Eigen::VectorXd& a,
@@ -104,27 +100,8 @@ ComponentStiffness component_stiffness(const TetGeometry& geo, int n, const Mate
     for (int v : geo.tets[t])
       if (out.dof_of_point[v] >= 0)
         out.mass.segment<3>(out.dof_of_point[v]).array() += law.density * geo.volume[t] / 4;
-  for (int j = 0; j < 7; ++j) {
-    const ComponentTensor c = component_tensor(j, law.lambda, law.mu);
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(geo.tets.size() * 144);
-    for (size_t t = 0; t < geo.tets.size(); ++t)
-      for (int a = 0; a < 4; ++a) {
-        const int da = out.dof_of_point[geo.tets[t][a]];
-        if (da < 0) continue;
-        for (int b = 0; b < 4; ++b) {
-          const int db = out.dof_of_point[geo.tets[t][b]];
-          if (db < 0) continue;
-          // Every entry is stored, zeros included, so that the seven parts share one pattern.
-          const Mat3 k =
-              orthotropic_block(geo.grad[t][a], geo.grad[t][b], geo.volume[t], c.lambda, c.mu);
-          for (int p = 0; p < 3; ++p)
-            for (int r = 0; r < 3; ++r) entries.emplace_back(da + p, db + r, k(p, r));
-        }
-      }
-    out.parts[j].resize(dofs, dofs);
-    out.parts[j].setFromTriplets(entries.begin(), entries.end());
-  }
+  for (int j = 0; j < 7; ++j)
+    out.parts[j] = assemble(out, component_tensor(j, law.lambda, law.mu), nullptr);
   return out;
 }
 

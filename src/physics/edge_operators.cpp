@@ -89,13 +89,17 @@ Mat3 orthotropic_block(const Vec3& ga, const Vec3& gb, double volume, double lam
   return k;
 }
 
+OrthotropicTensor orthotropic_tensor(double lambda, double mu, const StiffnessScales& scales) {
+  OrthotropicTensor c{lambda * scales.lambda, {}};
+  for (int p = 0; p < 3; ++p)
+    for (int q = 0; q < 3; ++q) c.mu[p][q] = mu * scales.mu[3 * p + q];
+  return c;
+}
+
 std::vector<Mat3> orthotropic_edge_matrices(const TetGeometry& geo, const PointAdjacency& adj,
                                             double lambda, double mu,
                                             const StiffnessScales& scales) {
-  const double lam = lambda * scales.lambda;
-  double m[3][3];
-  for (int p = 0; p < 3; ++p)
-    for (int q = 0; q < 3; ++q) m[p][q] = mu * scales.mu[3 * p + q];
+  const OrthotropicTensor c = orthotropic_tensor(lambda, mu, scales);
   std::vector<Mat3> k(adj.nbr.size(), Mat3::Zero());
   NeighbourSlots slot(adj.num_points());
   for (int i = 0; i < adj.num_points(); ++i) {
@@ -105,7 +109,8 @@ std::vector<Mat3> orthotropic_edge_matrices(const TetGeometry& geo, const PointA
       for (int b = 0; b < 4; ++b)
         if (b != a)
           k[slot[geo.tets[t][b]]] +=
-              orthotropic_block(geo.grad[t][a], geo.grad[t][b], geo.elastic_volume[t], lam, m);
+              orthotropic_block(geo.grad[t][a], geo.grad[t][b], geo.elastic_volume[t], c.lambda,
+                                c.mu);
     }
     slot.reset(adj, i);
   }

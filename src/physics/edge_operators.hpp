@@ -30,6 +30,13 @@ CombinedEdges combined_edge_operators(const TetGeometry& geo, const PointAdjacen
 Mat3 orthotropic_block(const Vec3& ga, const Vec3& gb, double volume, double lambda,
                        const double (&mu)[3][3]);
 
+/// λ and μ_pq of λ, μ under `scales`, as hooke() scales them: what orthotropic_block() takes.
+struct OrthotropicTensor {
+  double lambda;
+  double mu[3][3];
+};
+OrthotropicTensor orthotropic_tensor(double lambda, double mu, const StiffnessScales& scales);
+
 /// K_ij (or D_ij) of a calibrated level's orthotropic tensor (MaterialLaw::scales): λ and μ
 /// scaled as hooke() does. Equal to combined_edge_operators() with (λ, μ) to rounding when the
 /// scales are all one (the isotropic law keeps combined_edge_operators()).

@@ -9,15 +9,6 @@ namespace mrsim {
 
 namespace {
 
-double bbox_diagonal(const TetMesh& mesh) {
-  Vec3 lo = mesh.points.front(), hi = lo;
-  for (const Vec3& p : mesh.points) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return (hi - lo).norm();
-}
-
 bool selects(const FixedRegion& r, const Vec3& X, double tol) {
   switch (r.kind) {
     case FixedRegion::Kind::Box:

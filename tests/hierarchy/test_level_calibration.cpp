@@ -12,33 +12,13 @@
 #include "core/error.hpp"
 #include "hierarchy/level_calibration.hpp"
 #include "mesh/box_mesh.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "support/bundled_levels.hpp"
 
 namespace mrsim {
 namespace {
 
-struct Bundled {
-  std::vector<TetMesh> meshes;
-  std::vector<std::vector<std::uint8_t>> fixed;
-  std::vector<const TetMesh*> pointers() const {
-    std::vector<const TetMesh*> p;
-    for (const TetMesh& m : meshes) p.push_back(&m);
-    return p;
-  }
-};
-
-Bundled bundled(const std::string& name, int levels, const std::function<bool(const Vec3&)>& held) {
-  Bundled b;
-  for (int l = 0; l < levels; ++l) {
-    b.meshes.push_back(read_tet_mesh(std::string(MRSIM_SOURCE_DIR) + "/scenarios/meshes/" + name +
-                                         "_L" + std::to_string(l) + ".vtu",
-                                     LengthUnit::Metre));
-    std::vector<std::uint8_t> f;
-    for (const Vec3& p : b.meshes.back().points) f.push_back(held(p) ? 1 : 0);
-    b.fixed.push_back(f);
-  }
-  return b;
-}
+using Bundled = test_support::BundledLevels;
+using test_support::bundled_levels;
 
 MaterialLaw law(double E, double nu) {
   MaterialLaw m;
@@ -83,7 +63,7 @@ double worst(const std::vector<double>& ratios) {
 }
 
 TEST(LevelCalibration, LiverLevelsAloneAnswerLikeTheFinest) {
-  const Bundled b = bundled("liver", 4, [](const Vec3& p) { return p.z() <= 0.1; });
+  const Bundled b = bundled_levels("liver", 4, [](const Vec3& p) { return p.z() <= 0.1; });
   const auto c = calibrate_levels(b.pointers(), law(3e4, 0.4), b.fixed);
   print("liver", c);
   // Measured: sags 1.02-1.06 and f1 1.01-1.06 of L3's (before: sags up to 1.46, f2 0.85).
@@ -93,7 +73,7 @@ TEST(LevelCalibration, LiverLevelsAloneAnswerLikeTheFinest) {
 }
 
 TEST(LevelCalibration, BeamLevelsAloneAnswerLikeTheFinest) {
-  const Bundled b = bundled("beam", 3, [](const Vec3& p) { return std::abs(p.x()) <= 1e-3; });
+  const Bundled b = bundled_levels("beam", 3, [](const Vec3& p) { return std::abs(p.x()) <= 1e-3; });
   const auto c = calibrate_levels(b.pointers(), law(1e6, 0.3), b.fixed);
   print("beam", c);
   // Linear tets one or two across lock in bending: L0 sagged 0.23-0.36 of L2 and rang at
@@ -111,7 +91,7 @@ TEST(LevelCalibration, BeamLevelsAloneAnswerLikeTheFinest) {
 }
 
 TEST(LevelCalibration, LittleManLevelsAloneAnswerLikeTheFinest) {
-  const Bundled b = bundled("little_man", 3, [](const Vec3& p) { return p.z() <= 0.008; });
+  const Bundled b = bundled_levels("little_man", 3, [](const Vec3& p) { return p.z() <= 0.008; });
   const auto c = calibrate_levels(b.pointers(), law(2e4, 0.4), b.fixed);
   print("little_man", c);
   expect_calibrated(c, 0.05, 0.05);
@@ -140,7 +120,7 @@ void expect_per_tet(const Bundled& b, const std::vector<LevelCalibration>& c, do
 TEST(LevelCalibration, PerTetBeamLevelsAlone) {
   // L1 (two tets across) meets every target; L0, one tet across, follows f1 and its sags but
   // not its tip: 0.85 of L2's (the level-wide tensor: 0.68), the one target it misses.
-  const Bundled b = bundled("beam", 3, [](const Vec3& p) { return std::abs(p.x()) <= 1e-3; });
+  const Bundled b = bundled_levels("beam", 3, [](const Vec3& p) { return std::abs(p.x()) <= 1e-3; });
   const auto c = calibrate_levels(b.pointers(), law(1e6, 0.3), b.fixed, CalibrationKind::PerTet);
   print("beam per tet", c);
   const Bundled l1 = {{b.meshes[1], b.meshes[2]}, {b.fixed[1], b.fixed[2]}};

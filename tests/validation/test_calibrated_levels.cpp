@@ -15,7 +15,8 @@
 #include <vector>
 
 #include "hierarchy/level_calibration.hpp"
-#include "mesh/mesh_reader.hpp"
+#include "scenario/material.hpp"
+#include "support/bundled_levels.hpp"
 #include "validation/validation_record.hpp"
 
 using namespace mrsim;
@@ -33,24 +34,12 @@ struct Object {
 
 // The worst |peak z − 1| and |f1 − 1| over the coarse levels, and a note of every ratio.
 std::pair<double, std::string> worst_ratio(const Object& o) {
-  std::vector<TetMesh> meshes;
-  std::vector<std::vector<std::uint8_t>> fixed;
-  std::vector<const TetMesh*> pointers;
-  for (int l = 0; l < o.levels; ++l) {
-    meshes.push_back(read_tet_mesh(std::string(MRSIM_SOURCE_DIR) + "/scenarios/meshes/" + o.name +
-                                       "_L" + std::to_string(l) + ".vtu",
-                                   LengthUnit::Metre));
-  }
-  for (const TetMesh& m : meshes) {
-    pointers.push_back(&m);
-    std::vector<std::uint8_t> f;
-    for (const Vec3& p : m.points) f.push_back(o.held(p) ? 1 : 0);
-    fixed.push_back(f);
-  }
+  const test_support::BundledLevels b = test_support::bundled_levels(o.name, o.levels, o.held);
+  const scenario::LameParameters lame = scenario::lame_from_engineering({o.E, o.nu});
   MaterialLaw law;
-  law.lambda = o.E * o.nu / ((1 + o.nu) * (1 - 2 * o.nu));
-  law.mu = o.E / (2 * (1 + o.nu));
-  const auto c = calibrate_levels(pointers, law, fixed, CalibrationKind::PerTet);
+  law.lambda = lame.lambda;
+  law.mu = lame.mu;
+  const auto c = calibrate_levels(b.pointers(), law, b.fixed, CalibrationKind::PerTet);
   double worst = 0;
   std::string note;
   char line[200];
@@ -58,7 +47,7 @@ std::pair<double, std::string> worst_ratio(const Object& o) {
     const double peak = c[l].peak_after[2], f1 = c[l].frequency_after[0];
     worst = std::max({worst, std::abs(peak - 1), std::abs(f1 - 1)});
     std::snprintf(line, sizeof line, "%sL%d (%zu tets): peak z %.3f (uncalibrated %.3f), f1 %.3f (%.3f)",
-                  l ? "; " : "", l, meshes[l].tets.size(), peak, c[l].peak_before[2], f1,
+                  l ? "; " : "", l, b.meshes[l].tets.size(), peak, c[l].peak_before[2], f1,
                   c[l].frequency_before[0]);
     note += line;
   }
