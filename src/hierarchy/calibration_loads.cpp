@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <optional>
 
 #include "hierarchy/tet_locator.hpp"
 #include "mesh/boundary_faces.hpp"
@@ -46,26 +45,34 @@ std::vector<LocalLoad> local_loads(const TetMesh& finest, const std::vector<std:
   return loads;
 }
 
-std::vector<Eigen::VectorXd> level_loads(const std::vector<LocalLoad>& loads,
-                                         const TetMesh& finest, const TetMesh& level) {
-  std::vector<Eigen::VectorXd> out;
-  if (loads.empty()) return out;
-  const bool same = &level == &finest;
-  const std::optional<TetLocator> locator =
-      same ? std::nullopt : std::optional<TetLocator>(std::in_place, level);
-  for (const LocalLoad& load : loads) {
-    Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * static_cast<Eigen::Index>(level.points.size()));
-    for (int i : load.points) {
-      if (same) {
-        f.segment<3>(3 * i) += load.force;
-        continue;
-      }
-      const TetLocation at = locator->locate(finest.points[i]);
-      for (int a = 0; a < 4; ++a) f.segment<3>(3 * level.tets[at.tet][a]) += at.bary[a] * load.force;
-    }
-    out.push_back(std::move(f));
+std::vector<Eigen::VectorXd> to_level(const std::vector<Eigen::VectorXd>& fine_forces,
+                                      const TetMesh& finest, const TetMesh& level) {
+  if (&level == &finest || fine_forces.empty()) return fine_forces;
+  const TetLocator locator(level);
+  std::vector<Eigen::VectorXd> out(
+      fine_forces.size(), Eigen::VectorXd::Zero(3 * static_cast<Eigen::Index>(level.points.size())));
+  for (std::size_t i = 0; i < finest.points.size(); ++i) {
+    const auto at_point = [&](const Eigen::VectorXd& f) { return f.segment<3>(3 * static_cast<Eigen::Index>(i)); };
+    if (std::none_of(fine_forces.begin(), fine_forces.end(),
+                     [&](const Eigen::VectorXd& f) { return !at_point(f).isZero(0); }))
+      continue;
+    const TetLocation at = locator.locate(finest.points[i]);
+    for (std::size_t k = 0; k < fine_forces.size(); ++k)
+      for (int a = 0; a < 4; ++a)
+        out[k].segment<3>(3 * level.tets[at.tet][a]) += at.bary[a] * at_point(fine_forces[k]);
   }
   return out;
+}
+
+std::vector<Eigen::VectorXd> level_loads(const std::vector<LocalLoad>& loads,
+                                         const TetMesh& finest, const TetMesh& level) {
+  std::vector<Eigen::VectorXd> fine;
+  for (const LocalLoad& load : loads) {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * static_cast<Eigen::Index>(finest.points.size()));
+    for (int i : load.points) f.segment<3>(3 * i) = load.force;
+    fine.push_back(std::move(f));
+  }
+  return to_level(fine, finest, level);
 }
 
 }  // namespace mrsim

@@ -24,6 +24,13 @@ struct LocalLoad {
 std::vector<LocalLoad> local_loads(const TetMesh& finest, const std::vector<std::uint8_t>& fixed,
                                    int count, double radius);
 
+/// Forces at the finest level's points (3 per point) as nodal forces of `level` (3 per point,
+/// fixed points included): each point's force spread on the tet of `level` that holds it (or the
+/// nearest, extrapolated) by its barycentric weights, as the hierarchy transfers a ghost's force
+/// (method.md §4.1). On the finest level itself, the forces as given.
+std::vector<Eigen::VectorXd> to_level(const std::vector<Eigen::VectorXd>& fine_forces,
+                                      const TetMesh& finest, const TetMesh& level);
+
 /// Each load as nodal forces of `level` (3 per point, fixed points included): each finest
 /// point's force spread on the tet of `level` that holds it (or the nearest, extrapolated), by
 /// its barycentric weights. On the finest level itself, the forces at its points.

@@ -27,8 +27,10 @@ namespace mrsim {
 
 struct LevelCalibration {
   StiffnessScales scales;  // all ones on the finest level
-  // CalibrationKind::PerTet: one factor per tet of the level on top of `scales` (empty: none).
-  std::vector<double> tet_scales;
+  // CalibrationKind::PerTet: seven factors per tet of the level on top of `scales` (empty: none).
+  TetTensors tet_tensors;
+  /// The smallest and largest of the per-tet factors, any component ({1, 1} without them).
+  std::array<double, 2> tet_factor_range() const;
   // The level alone against the finest level, before and after the fit (ratios): mean and
   // largest displacement under gravity along x, y, z (empty for a free body; the largest is
   // fitted by PerTet only) and the six lowest frequencies.

@@ -31,9 +31,10 @@ struct LevelFrameView {
   // Per tet: the level that simulates most of it (cell array `simulated_by`; on the finest level
   // block, coloured by it, the object shows once, each part by its level). Empty: not written.
   std::span<const std::int8_t> simulated_by = {};
-  // Per tet: the factor object.calibration: per_tet gives it on the level's tensor (cell array
-  // `calibration_scale`; docs/hierarchy.md "Per-tet factors"). Empty: not written.
-  std::span<const double> calibration_scale = {};
+  // Per tet: the seven factors object.calibration: per_tet gives it on the level's tensor, on λ
+  // and on the μ of xx, yy, zz, yz, xz, xy (cell array `calibration_scale`, 7 named components;
+  // docs/hierarchy.md "Per-tet tensors"). Empty: not written.
+  std::span<const std::array<double, 7>> calibration_scale = {};
 };
 
 /// The object's skin (the VTU `surface` block): a triangle surface moved by the levels.

@@ -8,6 +8,7 @@
 #include <vtkSmartPointer.h>
 
 #include <algorithm>
+#include <array>
 #include <span>
 
 #include "core/vec.hpp"
@@ -31,6 +32,21 @@ vtkSmartPointer<ArrayT> scalar_array(const char* name, std::span<const T> values
   array->SetName(name);
   array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
   std::copy(values.begin(), values.end(), array->GetPointer(0));  // VTK's contiguous storage
+  return array;
+}
+
+/// An N-component float64 array, one tuple per value, its components named.
+template <std::size_t N>
+vtkSmartPointer<vtkDoubleArray> tuple_array(const char* name,
+                                            std::span<const std::array<double, N>> values,
+                                            const char* const (&component_names)[N]) {
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(static_cast<int>(N));
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (std::size_t k = 0; k < N; ++k) array->SetComponentName(static_cast<vtkIdType>(k), component_names[k]);
+  double* out = array->GetPointer(0);
+  for (const std::array<double, N>& v : values) out = std::copy(v.begin(), v.end(), out);
   return array;
 }
 

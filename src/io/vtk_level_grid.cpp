@@ -39,9 +39,10 @@ void fill_level_grid(vtkUnstructuredGrid* grid, const LevelFrameView& view, doub
   if (!view.simulated_by.empty())
     grid->GetCellData()->AddArray(
         scalar_array<vtkSignedCharArray>("simulated_by", view.simulated_by));
-  if (!view.calibration_scale.empty())
-    grid->GetCellData()->AddArray(
-        scalar_array<vtkDoubleArray>("calibration_scale", view.calibration_scale));
+  if (!view.calibration_scale.empty()) {
+    static const char* const kNames[7] = {"lambda", "xx", "yy", "zz", "yz", "xz", "xy"};
+    grid->GetCellData()->AddArray(tuple_array("calibration_scale", view.calibration_scale, kNames));
+  }
   grid->GetFieldData()->Initialize();
   add_time_value(grid->GetFieldData(), time);
 }

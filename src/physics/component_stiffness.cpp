@@ -13,22 +13,23 @@ OrthotropicTensor component_tensor(int j, double lambda, double mu) {
   return orthotropic_tensor(lambda, mu, StiffnessScales::from_components(unit));
 }
 
-// Σ_t V_t (p_t) Bᵀ C B over the free DoFs of `cs` (`tet_scales` null: no p_t). Every entry is
-// stored, zeros included, so that matrices of one level share one pattern.
-SparseMatrix assemble(const ComponentStiffness& cs, const OrthotropicTensor& c,
-                      const std::vector<double>* tet_scales) {
+// Σ_t V_t Bᵀ C_t B over the free DoFs of `cs`, C_t = tensor(t). Every entry is stored, zeros
+// included, so that matrices of one level share one pattern.
+template <class TensorOf>
+SparseMatrix assemble(const ComponentStiffness& cs, TensorOf tensor) {
   const TetGeometry& geo = cs.geo;
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(geo.tets.size() * 144);
   for (int t = 0; t < cs.num_tets(); ++t) {
-    const double V = tet_scales ? geo.volume[t] * (*tet_scales)[t] : geo.volume[t];
+    const OrthotropicTensor c = tensor(t);
     for (int a = 0; a < 4; ++a) {
       const int da = cs.dof_of_point[geo.tets[t][a]];
       if (da < 0) continue;
       for (int b = 0; b < 4; ++b) {
         const int db = cs.dof_of_point[geo.tets[t][b]];
         if (db < 0) continue;
-        const Mat3 k = orthotropic_block(geo.grad[t][a], geo.grad[t][b], V, c.lambda, c.mu);
+        const Mat3 k =
+            orthotropic_block(geo.grad[t][a], geo.grad[t][b], geo.volume[t], c.lambda, c.mu);
         for (int p = 0; p < 3; ++p)
           for (int r = 0; r < 3; ++r) entries.emplace_back(da + p, db + r, k(p, r));
       }
@@ -58,10 +59,10 @@ SparseMatrix ComponentStiffness::combined(const std::array<double, 7>& scales) c
 }
 
 SparseMatrix ComponentStiffness::combined(const std::array<double, 7>& scales,
-                                          const std::vector<double>& tet_scales) const {
-  // One tensor: the orthotropic block of K_tj summed with the factors, per tet times p_t.
-  return assemble(*this, orthotropic_tensor(lambda, mu, StiffnessScales::from_components(scales)),
-                  &tet_scales);
+                                          const TetTensors& tets) const {
+  // One tensor per tet: the orthotropic blocks of its K_tj summed with the factors.
+  const StiffnessScales level = StiffnessScales::from_components(scales);
+  return assemble(*this, [&](int t) { return orthotropic_tensor(lambda, mu, level.times(tets[t])); });
 }
 
 std::vector<ComponentValues> ComponentStiffness::tet_terms(const Eigen::VectorXd& a,
@@ -101,7 +102,7 @@ ComponentStiffness component_stiffness(const TetGeometry& geo, int n, const Mate
       if (out.dof_of_point[v] >= 0)
         out.mass.segment<3>(out.dof_of_point[v]).array() += law.density * geo.volume[t] / 4;
   for (int j = 0; j < 7; ++j)
-    out.parts[j] = assemble(out, component_tensor(j, law.lambda, law.mu), nullptr);
+    out.parts[j] = assemble(out, [&](int) { return component_tensor(j, law.lambda, law.mu); });
   return out;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // The linear (Cauchy) stiffness of a level split by the seven coefficients of an orthotropic
 // tensor (MaterialLaw::scales): K(s) = Σ_j s_j K_j, with K_0 the λ part and K_1..K_6 the μ
-// parts of the strain components xx, yy, zz, yz, xz, xy; with one more factor per tet
-// (MaterialLaw::tet_scales), K(s, p) = Σ_t p_t Σ_j s_j K_tj. Restricted to the free degrees of
+// parts of the strain components xx, yy, zz, yz, xz, xy; with seven more factors per tet
+// (MaterialLaw::tet_tensors), K(s, q) = Σ_t Σ_j s_j q_tj K_tj. Restricted to the free degrees of
 // freedom (3 per point that is not fixed). Used by the calibration of coarse levels
 // (hierarchy/level_calibration.hpp), at set-up only.
 #include <Eigen/Sparse>
@@ -29,9 +29,8 @@ struct ComponentStiffness {
   int num_tets() const { return static_cast<int>(geo.tets.size()); }
   /// Σ_j scales_j parts_j.
   SparseMatrix combined(const std::array<double, 7>& scales) const;
-  /// Σ_t tet_scales_t Σ_j scales_j K_tj (assembled again: set-up, coarse levels).
-  SparseMatrix combined(const std::array<double, 7>& scales,
-                        const std::vector<double>& tet_scales) const;
+  /// Σ_t Σ_j scales_j tets_tj K_tj (assembled again: set-up, coarse levels).
+  SparseMatrix combined(const std::array<double, 7>& scales, const TetTensors& tets) const;
   /// aᵀ K_tj b of every tet t and component j (a, b over the free DoFs): the terms whose sums
   /// are aᵀ parts_j b. What the derivatives of a per-tet fit need, in one pass over the tets.
   std::vector<ComponentValues> tet_terms(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;

@@ -99,18 +99,20 @@ OrthotropicTensor orthotropic_tensor(double lambda, double mu, const StiffnessSc
 std::vector<Mat3> orthotropic_edge_matrices(const TetGeometry& geo, const PointAdjacency& adj,
                                             double lambda, double mu,
                                             const StiffnessScales& scales) {
-  const OrthotropicTensor c = orthotropic_tensor(lambda, mu, scales);
+  const OrthotropicTensor level = orthotropic_tensor(lambda, mu, scales);
+  std::vector<OrthotropicTensor> per_tet;  // object.calibration: per_tet
+  for (const StiffnessScales& s : geo.scales) per_tet.push_back(orthotropic_tensor(lambda, mu, s));
   std::vector<Mat3> k(adj.nbr.size(), Mat3::Zero());
   NeighbourSlots slot(adj.num_points());
   for (int i = 0; i < adj.num_points(); ++i) {
     slot.set(adj, i);
     for (int s = adj.inc_start[i]; s < adj.inc_start[i + 1]; ++s) {
       const int t = adj.inc_tet[s], a = adj.inc_local[s];
+      const OrthotropicTensor& c = per_tet.empty() ? level : per_tet[t];
       for (int b = 0; b < 4; ++b)
         if (b != a)
           k[slot[geo.tets[t][b]]] +=
-              orthotropic_block(geo.grad[t][a], geo.grad[t][b], geo.elastic_volume[t], c.lambda,
-                                c.mu);
+              orthotropic_block(geo.grad[t][a], geo.grad[t][b], geo.volume[t], c.lambda, c.mu);
     }
     slot.reset(adj, i);
   }

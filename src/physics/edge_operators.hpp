@@ -37,9 +37,10 @@ struct OrthotropicTensor {
 };
 OrthotropicTensor orthotropic_tensor(double lambda, double mu, const StiffnessScales& scales);
 
-/// K_ij (or D_ij) of a calibrated level's orthotropic tensor (MaterialLaw::scales): λ and μ
-/// scaled as hooke() does. Equal to combined_edge_operators() with (λ, μ) to rounding when the
-/// scales are all one (the isotropic law keeps combined_edge_operators()).
+/// K_ij (or D_ij) of a calibrated level's orthotropic tensor (MaterialLaw::scales, or each tet's
+/// TetGeometry::scales when it has them): λ and μ scaled as hooke() does. Equal to
+/// combined_edge_operators() with (λ, μ) to rounding when the scales are all one (the isotropic
+/// law keeps combined_edge_operators()).
 std::vector<Mat3> orthotropic_edge_matrices(const TetGeometry& geo, const PointAdjacency& adj,
                                             double lambda, double mu,
                                             const StiffnessScales& scales);

@@ -117,8 +117,9 @@ struct ScatterSink {
   }
 };
 
-// The nodal forces f[a][i][b] = -V (F S) ∇N_a of the block's B tets.
-template <int B, bool Damped>
+// The nodal forces f[a][i][b] = -V (F S) ∇N_a of the block's B tets; PerTet: each tet's own
+// scales (GreenKernelData::tet_scales), applied as kernel_data() applies a level's.
+template <int B, bool Damped, bool PerTet>
 void block_forces(const GreenKernelData& m, const int* tets, const double (*u)[3],
                   const double (*v)[3], double (&f)[4][3][B]) {
   const double lambda = m.lambda, phi = m.phi;
@@ -139,8 +140,15 @@ void block_forces(const GreenKernelData& m, const int* tets, const double (*u)[3
       }
   for (int b = 0; b < B; ++b) {
     const double tr = right(S[0][b], S[4][b], S[8][b]);  // still E here
-    for (int k = 0; k < 9; ++k) S[k][b] = two_mu[k] * S[k][b];
-    for (int k : kDiagonal) S[k][b] += lambda * tr;
+    if constexpr (PerTet) {
+      const double(&s)[10] = m.tet_scales[tets[b]];
+      for (int k = 0; k < 9; ++k) S[k][b] = (2.0 * (m.base[1] * s[1 + k])) * S[k][b];
+      const double lambda_t = m.base[0] * s[0];
+      for (int k : kDiagonal) S[k][b] += lambda_t * tr;
+    } else {
+      for (int k = 0; k < 9; ++k) S[k][b] = two_mu[k] * S[k][b];
+      for (int k : kDiagonal) S[k][b] += lambda * tr;
+    }
   }
   for (int k = 0; k < 9; ++k)
     for (int b = 0; b < B; ++b) F[k][b] = G[k][b];
@@ -162,8 +170,15 @@ void block_forces(const GreenKernelData& m, const int* tets, const double (*u)[3
           Ed[MRSIM_IX(i, j)] = 0.5 * (D[MRSIM_IX(i, j)][b] + D[MRSIM_IX(j, i)][b]);
       const double tr = right(Ed[0], Ed[4], Ed[8]);
       double V[9];
-      for (int k = 0; k < 9; ++k) V[k] = two_psi[k] * Ed[k];
-      for (int k : kDiagonal) V[k] += phi * tr;
+      if constexpr (PerTet) {
+        const double(&s)[10] = m.tet_scales[tets[b]];
+        for (int k = 0; k < 9; ++k) V[k] = (2.0 * (m.base[3] * s[1 + k])) * Ed[k];
+        const double phi_t = m.base[2] * s[0];
+        for (int k : kDiagonal) V[k] += phi_t * tr;
+      } else {
+        for (int k = 0; k < 9; ++k) V[k] = two_psi[k] * Ed[k];
+        for (int k : kDiagonal) V[k] += phi * tr;
+      }
       for (int k = 0; k < 9; ++k) S[k][b] += V[k];
     }
   }
@@ -185,11 +200,11 @@ void block_forces(const GreenKernelData& m, const int* tets, const double (*u)[3
                             P[MRSIM_IX(i, 2)][b] * g[a][2][b]);
 }
 
-template <int B, bool Damped, class Sink>
+template <int B, bool Damped, bool PerTet, class Sink>
 void block(const GreenKernelData& m, const int* tets, const double (*u)[3], const double (*v)[3],
            const Sink& sink) {
   double f[4][3][B];
-  block_forces<B, Damped>(m, tets, u, v, f);
+  block_forces<B, Damped, PerTet>(m, tets, u, v, f);
   sink.template put<B>(m, tets, f);
 }
 
@@ -198,13 +213,13 @@ void block(const GreenKernelData& m, const int* tets, const double (*u)[3], cons
 // (the same bits). There is no single-tet block: GCC 12 compiles block_forces<1> for AVX-512
 // (-O3, with both its loop and SLP vectorizers) into wrong forces on two components of one
 // vertex (GreenNodalForces.BitIdenticalToGreenPiola caught it).
-template <bool Damped, class Sink>
+template <bool Damped, bool PerTet, class Sink>
 void tail(const GreenKernelData& m, const int* tets, int count, const double (*u)[3],
           const double (*v)[3], const Sink& sink) {
   int padded[4];
   for (int b = 0; b < 4; ++b) padded[b] = tets[b < count ? b : count - 1];
   double f[4][3][4];
-  block_forces<4, Damped>(m, padded, u, v, f);
+  block_forces<4, Damped, PerTet>(m, padded, u, v, f);
   for (int b = 0; b < count; ++b) {
     double one[4][3][1];
     for (int a = 0; a < 4; ++a)
@@ -215,28 +230,32 @@ void tail(const GreenKernelData& m, const int* tets, int count, const double (*u
 
 #undef MRSIM_IX
 
-template <bool Damped, class Sink>
+template <bool Damped, bool PerTet, class Sink>
 void all_blocks(const GreenKernelData& m, const int* tets, int count, const double (*u)[3],
                 const double (*v)[3], const Sink& sink) {
   constexpr int kBlock = Sink::kBlock;
   int k = 0;
-  for (; k + kBlock <= count; k += kBlock) block<kBlock, Damped>(m, tets + k, u, v, sink);
+  for (; k + kBlock <= count; k += kBlock) block<kBlock, Damped, PerTet>(m, tets + k, u, v, sink);
   if constexpr (kBlock > 8)
-    for (; k + 8 <= count; k += 8) block<8, Damped>(m, tets + k, u, v, sink);
+    for (; k + 8 <= count; k += 8) block<8, Damped, PerTet>(m, tets + k, u, v, sink);
   // The tail in fours, then the last 1-3 in one padded block of four: each level's live tets
   // end in up to 15 (single-tet blocks were 1.7 % of the adaptive liver_probe's instructions).
-  for (; k + 4 <= count; k += 4) block<4, Damped>(m, tets + k, u, v, sink);
-  if (k < count) tail<Damped>(m, tets + k, count - k, u, v, sink);
+  for (; k + 4 <= count; k += 4) block<4, Damped, PerTet>(m, tets + k, u, v, sink);
+  if (k < count) tail<Damped, PerTet>(m, tets + k, count - k, u, v, sink);
 }
 
-// The whole pass, damped (φ or ψ non-zero, MaterialLaw::damped()) or not: what each build exports.
+// The whole pass, damped (φ or ψ non-zero, MaterialLaw::damped()) or not, with per-tet scales or
+// not: what each build exports.
 template <class Sink>
 void every_block(const GreenKernelData& m, const int* tets, int count, const double (*u)[3],
                  const double (*v)[3], const Sink& sink) {
-  if (m.phi != 0 || m.two_psi[0] != 0)  // scales are positive: ψ ≠ 0 ⇔ two_psi ≠ 0
-    all_blocks<true>(m, tets, count, u, v, sink);
+  const bool damped = m.phi != 0 || m.two_psi[0] != 0;  // scales are positive: ψ ≠ 0 ⇔ two_psi ≠ 0
+  if (m.tet_scales)
+    damped ? all_blocks<true, true>(m, tets, count, u, v, sink)
+           : all_blocks<false, true>(m, tets, count, u, v, sink);
   else
-    all_blocks<false>(m, tets, count, u, v, sink);
+    damped ? all_blocks<true, false>(m, tets, count, u, v, sink)
+           : all_blocks<false, false>(m, tets, count, u, v, sink);
 }
 
 }  // namespace

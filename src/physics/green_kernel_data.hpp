@@ -13,6 +13,10 @@ struct GreenKernelData {
   // MaterialLaw::scales; all equal on an isotropic level).
   double lambda, phi;
   double two_mu[9], two_psi[9];
+  // object.calibration: per_tet: each tet's scales {λ, μ[9]} (TetGeometry::scales), applied to
+  // the law's own λ, μ, φ, ψ in `base` as kernel_data() applies a level's: null for none.
+  const double (*tet_scales)[10] = nullptr;
+  double base[4] = {0, 0, 0, 0};
 };
 
 /// No upper bound on the points a scattering pass writes (one thread owns them all).

@@ -11,9 +11,12 @@ namespace mrsim {
 
 namespace {
 
-// The kernel's view of tet arrays (the level's own or a packed copy) with the level's material.
+static_assert(sizeof(StiffnessScales) == 10 * sizeof(double));
+
+// The kernel's view of tet arrays (the level's own or a packed copy) with the level's material
+// and, with per_tet, each tet's scales (`scales` empty: none).
 GreenKernelData kernel_data(const MaterialLaw& law, const Tet* tets, const TetGradients* grad,
-                            const double* volume) {
+                            const double* volume, const std::vector<StiffnessScales>& scales) {
   GreenKernelData d{reinterpret_cast<const double(*)[4][3]>(grad),
                     reinterpret_cast<const int(*)[4]>(tets),
                     volume,
@@ -26,6 +29,10 @@ GreenKernelData kernel_data(const MaterialLaw& law, const Tet* tets, const TetGr
     d.two_mu[k] = 2.0 * (law.mu * law.scales.mu[k]);
     d.two_psi[k] = 2.0 * (law.psi * law.scales.mu[k]);
   }
+  if (!scales.empty()) {
+    d.tet_scales = reinterpret_cast<const double(*)[10]>(scales.data());
+    d.base[0] = law.lambda, d.base[1] = law.mu, d.base[2] = law.phi, d.base[3] = law.psi;
+  }
   return d;
 }
 
@@ -35,7 +42,8 @@ static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(TetGradients) == 12 *
 }  // namespace
 
 GreenKernelData green_kernel_data(const LevelModel& m) {
-  return kernel_data(m.law, m.geo.tets.data(), m.geo.grad.data(), m.geo.elastic_volume.data());
+  return kernel_data(m.law, m.geo.tets.data(), m.geo.grad.data(), m.geo.volume.data(),
+                     m.geo.scales);
 }
 
 bool has_avx512_kernel() {
@@ -172,7 +180,7 @@ void green_scatter_packed(const LevelModel& m, PackedTets& packed, const Vec3* u
     packed.weight_source = weight;
   }
   const GreenKernelData d =
-      kernel_data(m.law, packed.tets.data(), packed.grad.data(), packed.elastic_volume.data());
+      kernel_data(m.law, packed.tets.data(), packed.grad.data(), packed.volume.data(), packed.scales);
   scatter(d, packed.order.data(), n, u, v, weight ? packed.weight.data() : nullptr, mask, f, 0,
           kAllPoints);
 }

@@ -35,14 +35,15 @@ inline void tet_nodal_forces(const LevelModel& m, int t, const Vec3* u, const Ve
   const Tet& tet = m.geo.tets[t];
   const Mat3 G = tet_gradient(g, tet, u);
   const bool green = m.law.strain == StrainMeasure::GreenLagrange;
+  const StiffnessScales& s = m.geo.scales_of(t, m.law.scales);
   Mat3 P;
   if (m.law.damped()) {
     const Mat3 Gd = tet_gradient(g, tet, v);
-    P = green ? green_piola(G, &Gd, m.law) : cauchy_stress(G, &Gd, m.law);
+    P = green ? green_piola(G, &Gd, m.law, s) : cauchy_stress(G, &Gd, m.law, s);
   } else {
-    P = green ? green_piola(G, nullptr, m.law) : cauchy_stress(G, nullptr, m.law);
+    P = green ? green_piola(G, nullptr, m.law, s) : cauchy_stress(G, nullptr, m.law, s);
   }
-  P *= -m.geo.elastic_volume[t];
+  P *= -m.geo.volume[t];
   for (int a = 0; a < 4; ++a) out[a].noalias() = P * g[a];
 }
 
@@ -232,9 +233,10 @@ Vec3 point_internal_force(const LevelModel& m, int i, const Vec3* u, const Vec3*
     const Mat3 G = tet_gradient(g, m.geo.tets[t], u);
     const Mat3 Gd = tet_gradient(g, m.geo.tets[t], v);
     const Mat3* gd = m.law.damped() ? &Gd : nullptr;
-    const Mat3 P = m.law.strain == StrainMeasure::GreenLagrange ? green_piola(G, gd, m.law)
-                                                        : cauchy_stress(G, gd, m.law);
-    fi -= m.geo.elastic_volume[t] * (P * g[m.adj.inc_local[s]]);
+    const StiffnessScales& sc = m.geo.scales_of(t, m.law.scales);
+    const Mat3 P = m.law.strain == StrainMeasure::GreenLagrange ? green_piola(G, gd, m.law, sc)
+                                                                : cauchy_stress(G, gd, m.law, sc);
+    fi -= m.geo.volume[t] * (P * g[m.adj.inc_local[s]]);
   }
   return fi;
 }
@@ -244,7 +246,7 @@ double elastic_energy(const LevelModel& m, const Vec3* u) {
   for (int t = 0; t < m.num_tets(); ++t) {
     const Mat3 G = tet_gradient(m.geo.grad[t], m.geo.tets[t], u);
     const Mat3 E = m.law.strain == StrainMeasure::GreenLagrange ? green_strain(G) : cauchy_strain(G);
-    energy += m.geo.elastic_volume[t] * energy_density(E, m.law);
+    energy += m.geo.volume[t] * energy_density(E, m.law, m.geo.scales_of(t, m.law.scales));
   }
   return energy;
 }

@@ -154,16 +154,16 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law, bool s
   if (!held.empty() && held.size() != mesh.points.size())
     throw std::logic_error("build_level_model: a held mask of another level");
   if (std::find(held.begin(), held.end(), 1) != held.end()) m.held = held;
-  m.geo = build_tet_geometry(mesh, law.tet_scales.get());
+  m.geo = build_tet_geometry(mesh, &law);
   m.adj = build_point_adjacency(static_cast<int>(mesh.points.size()), mesh.tets);
   m.mass = lumped_masses(m.geo, m.adj, law.density);
   m.lumped_volume = lumped_masses(m.geo, m.adj, 1.0);
   // K = λA + μB and D = φA + ψB of the isotropic law come with the Laplacian weights; a
   // calibrated level (hierarchy/level_calibration.hpp) takes only the weights from there.
   const bool matrices = !known || edge_matrices_needed(law, semi_implicit);
-  // Per-tet factors (object.calibration: per_tet) go the orthotropic way, which integrates K and
-  // D over the elastic volumes; the weights keep the geometric ones.
-  const bool isotropic = law.scales.isotropic() && !law.tet_scales;
+  // Per-tet tensors (object.calibration: per_tet) go the orthotropic way, which takes each tet's
+  // scales (TetGeometry::scales); the weights stay the geometric ones.
+  const bool isotropic = law.scales.isotropic() && !law.tet_tensors;
   std::vector<std::array<double, 2>> coefficients;
   if (matrices && isotropic) coefficients.push_back({law.lambda, law.mu});
   if (matrices && isotropic && law.damped()) coefficients.push_back({law.phi, law.psi});

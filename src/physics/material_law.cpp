@@ -32,11 +32,20 @@ std::array<double, 7> StiffnessScales::components() const {
   return c;
 }
 
+StiffnessScales StiffnessScales::times(const std::array<double, 7>& factors) const {
+  std::array<double, 7> c = components();
+  for (int j = 0; j < 7; ++j) c[j] *= factors[j];
+  return from_components(c);
+}
+
 double MaterialLaw::p_wave_speed() const {
-  double tet = 1;  // the stiffest tet's factor (object.calibration: per_tet)
-  if (tet_scales)
-    for (double s : *tet_scales) tet = std::max(tet, s);
-  return std::sqrt(tet * (bound_lambda() + 2 * bound_mu()) / density);
+  double modulus = bound_lambda() + 2 * bound_mu();
+  if (tet_tensors)  // the stiffest tet's (object.calibration: per_tet)
+    for (const auto& q : *tet_tensors) {
+      const StiffnessScales s = scales.times(q);
+      modulus = std::max(modulus, bound_lambda(s) + 2 * bound_mu(s));
+    }
+  return std::sqrt(modulus / density);
 }
 
 }  // namespace mrsim

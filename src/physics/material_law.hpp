@@ -23,7 +23,15 @@ struct StiffnessScales {
   /// From the fit's seven values {λ, xx, yy, zz, yz, xz, xy}.
   static StiffnessScales from_components(const std::array<double, 7>& c);
   std::array<double, 7> components() const;
+  /// These scales with each of the seven components multiplied by `factors`' (all ones: these,
+  /// bit for bit).
+  StiffnessScales times(const std::array<double, 7>& factors) const;
 };
+
+/// object.calibration: per_tet: seven factors per tet on its level's tensor, in the order of
+/// StiffnessScales::components() ({λ, xx, yy, zz, yz, xz, xy}): each tet its own orthotropic
+/// tensor (docs/hierarchy.md "Per-tet tensors").
+using TetTensors = std::vector<std::array<double, 7>>;
 
 struct MaterialLaw {
   StrainMeasure strain = StrainMeasure::GreenLagrange;
@@ -31,18 +39,24 @@ struct MaterialLaw {
   double phi = 0, psi = 0;    // Pa.s
   double density = 1000;      // kg/m^3
   StiffnessScales scales;     // calibrated level; isotropic by default
-  // object.calibration: per_tet: one more factor per tet of the level on its whole tensor (and
-  // damping); null: 1 for every tet. The level's TetGeometry::elastic_volume carries it.
-  std::shared_ptr<const std::vector<double>> tet_scales;
+  // object.calibration: per_tet: each tet's factors on the level's tensor (and damping), null:
+  // all ones. The level's TetGeometry::scales carries each tet's product with `scales`.
+  std::shared_ptr<const TetTensors> tet_tensors;
 
   bool damped() const { return phi != 0 || psi != 0; }
-  /// P-wave speed √((λ+2μ)/ρ), the Courant speed of method.md §5.2 (largest scales).
+  /// P-wave speed √((λ+2μ)/ρ), the Courant speed of method.md §5.2 (largest scales, the
+  /// stiffest tet's with tet_tensors).
   double p_wave_speed() const;
-  /// λ, μ (or φ, ψ) bounding the calibrated tensor from above: λ·lambda, μ·max(mu).
-  double bound_lambda() const { return lambda * scales.lambda; }
-  double bound_mu() const { return mu * scales.max_mu(); }
-  double bound_phi() const { return phi * scales.lambda; }
-  double bound_psi() const { return psi * scales.max_mu(); }
+  /// λ, μ (or φ, ψ) bounding a tensor with scales `s` from above: λ·lambda, μ·max(mu); the
+  /// level's own by default (one tet's: TetGeometry::scales_of()).
+  double bound_lambda(const StiffnessScales& s) const { return lambda * s.lambda; }
+  double bound_mu(const StiffnessScales& s) const { return mu * s.max_mu(); }
+  double bound_phi(const StiffnessScales& s) const { return phi * s.lambda; }
+  double bound_psi(const StiffnessScales& s) const { return psi * s.max_mu(); }
+  double bound_lambda() const { return bound_lambda(scales); }
+  double bound_mu() const { return bound_mu(scales); }
+  double bound_phi() const { return bound_phi(scales); }
+  double bound_psi() const { return bound_psi(scales); }
 };
 
 }  // namespace mrsim

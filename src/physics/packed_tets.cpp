@@ -9,14 +9,16 @@ void PackedTets::pack(const TetGeometry& geo, const std::vector<int>& ids) {
   count = static_cast<int>(ids.size());
   tets.resize(count);
   grad.resize(count);
-  elastic_volume.resize(count);
+  volume.resize(count);
+  scales.resize(geo.scales.empty() ? 0 : count);
   weight.resize(count);
   order.resize(count);
   weight_source = nullptr;
   for (int k = 0; k < count; ++k) {
     tets[k] = geo.tets[ids[k]];
     grad[k] = geo.grad[ids[k]];
-    elastic_volume[k] = geo.elastic_volume[ids[k]];
+    volume[k] = geo.volume[ids[k]];
+    if (!scales.empty()) scales[k] = geo.scales[ids[k]];
   }
   std::iota(order.begin(), order.end(), 0);
 }
@@ -26,7 +28,8 @@ void PackedTets::clear() {
   count = 0;
   tets.clear();
   grad.clear();
-  elastic_volume.clear();
+  volume.clear();
+  scales.clear();
   weight.clear();
   weight_source = nullptr;
   order.clear();

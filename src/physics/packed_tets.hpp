@@ -1,5 +1,5 @@
 #pragma once
-// The tets a partly simulated level evaluates, copied contiguously (vertices, ∇N, elastic volume) at each
+// The tets a partly simulated level evaluates, copied contiguously (vertices, ∇N, volume, per-tet scales) at each
 // topology change, in their ascending id order. The one-thread Green–Lagrange pass then streams
 // them instead of striding through the whole level's arrays between other levels' passes: on the
 // bundled liver_probe the adaptive run's kernel took 74 ns per tet update against 61 for the
@@ -17,7 +17,8 @@ struct PackedTets {
   int count = 0;
   std::vector<Tet> tets;
   std::vector<TetGradients> grad;
-  std::vector<double> elastic_volume;  // TetGeometry::elastic_volume
+  std::vector<double> volume;
+  std::vector<StiffnessScales> scales;  // TetGeometry::scales (empty without them)
   // Per packed tet, gathered from the level's weights at the first pass after pack() or after
   // they were edited (LevelForceField::edit_tet_weights()), never per step.
   std::vector<double> weight;

@@ -36,10 +36,11 @@ TetEnergyBounds tet_energy_bounds(const TetGeometry& geo, const MaterialLaw& law
   for (std::size_t t = 0; t < n; ++t) {
     // One eigenvalue solve serves both bounds of the tet.
     const GradientNorms norms = gradient_norms(geo.grad[t]);
-    // A calibrated level's tensor is bounded by its largest scales (MaterialLaw::bound_*).
-    out.stiffness[t] = energy_bound(norms, geo.elastic_volume[t], law.bound_lambda(), law.bound_mu());
+    // A calibrated tet's tensor is bounded by its largest scales (MaterialLaw::bound_*).
+    const StiffnessScales& s = geo.scales_of(static_cast<int>(t), law.scales);
+    out.stiffness[t] = energy_bound(norms, geo.volume[t], law.bound_lambda(s), law.bound_mu(s));
     if (law.damped())
-      out.damping[t] = energy_bound(norms, geo.elastic_volume[t], law.bound_phi(), law.bound_psi());
+      out.damping[t] = energy_bound(norms, geo.volume[t], law.bound_phi(s), law.bound_psi(s));
   }
   return out;
 }

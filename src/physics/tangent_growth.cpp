@@ -20,8 +20,8 @@ StrainTop strain_top(const Mat3& grad_u) {
   return {es.eigenvalues()(2), E.trace()};
 }
 
-double growth_of(const StrainTop& e, const MaterialLaw& law) {
-  const double lambda = law.bound_lambda(), mu = law.bound_mu();
+double growth_of(const StrainTop& e, const MaterialLaw& law, const StiffnessScales& s) {
+  const double lambda = law.bound_lambda(s), mu = law.bound_mu(s);
   if (!(lambda + 2 * mu > 0)) return std::max(0.0, 2 * e.e_max);  // no stress: the material part
   const double stress = lambda * e.trace + 2 * mu * e.e_max;
   return std::max(0.0, 2 * e.e_max + std::max(0.0, stress) / (lambda + 2 * mu));
@@ -29,8 +29,8 @@ double growth_of(const StrainTop& e, const MaterialLaw& law) {
 
 }  // namespace
 
-double tangent_growth(const Mat3& grad_u, const MaterialLaw& law) {
-  return growth_of(strain_top(grad_u), law);
+double tangent_growth(const Mat3& grad_u, const MaterialLaw& law, const StiffnessScales& s) {
+  return growth_of(strain_top(grad_u), law, s);
 }
 
 double damping_growth(const Mat3& grad_u) { return std::max(0.0, 2 * strain_top(grad_u).e_max); }
@@ -39,7 +39,8 @@ double largest_tangent_growth(const TetGeometry& geo, std::span<const int> tets,
                               const std::vector<Vec3>& u, const MaterialLaw& law) {
   double top = 0;
   for (const int t : tets)
-    top = std::max(top, tangent_growth(tet_gradient(geo.grad[t], geo.tets[t], u.data()), law));
+    top = std::max(top, tangent_growth(tet_gradient(geo.grad[t], geo.tets[t], u.data()), law,
+                                       geo.scales_of(t, law.scales)));
   return top;
 }
 
@@ -51,7 +52,7 @@ double tangent_growths_of(const TetGeometry& geo, std::span<const int> tets,
   double top = 0;
   for (const int t : tets) {
     const StrainTop e = strain_top(tet_gradient(geo.grad[t], geo.tets[t], u.data()));
-    top = std::max(top, growth_of(e, law));
+    top = std::max(top, growth_of(e, law, geo.scales_of(t, law.scales)));
     const double g_d = std::max(0.0, 2 * e.e_max);
     for (const int a : geo.tets[t]) damping[a] = std::max(damping[a], g_d);
   }

@@ -24,9 +24,12 @@
 
 namespace mrsim {
 
-/// g of one tet with displacement gradient `grad_u`, with the law's bounding λ and μ
-/// (MaterialLaw::bound_lambda/bound_mu on a calibrated level).
-double tangent_growth(const Mat3& grad_u, const MaterialLaw& law);
+/// g of one tet with displacement gradient `grad_u`, with the law's bounding λ and μ under the
+/// tet's scales `s` (MaterialLaw::bound_lambda/bound_mu on a calibrated level).
+double tangent_growth(const Mat3& grad_u, const MaterialLaw& law, const StiffnessScales& s);
+inline double tangent_growth(const Mat3& grad_u, const MaterialLaw& law) {
+  return tangent_growth(grad_u, law, law.scales);
+}
 
 /// The largest g over `tets` of a level at displacements `u`; 0 for an empty list.
 double largest_tangent_growth(const TetGeometry& geo, std::span<const int> tets,

@@ -5,7 +5,7 @@
 
 namespace mrsim {
 
-TetGeometry build_tet_geometry(const TetMesh& mesh, const std::vector<double>* tet_scales) {
+TetGeometry build_tet_geometry(const TetMesh& mesh, const MaterialLaw* law) {
   TetGeometry geo;
   const size_t n = mesh.tets.size();
   geo.tets = mesh.tets;
@@ -28,12 +28,13 @@ TetGeometry build_tet_geometry(const TetMesh& mesh, const std::vector<double>* t
     for (int a = 1; a < 4; ++a) geo.grad[t][a] = Dinv.row(a - 1).transpose();
     geo.grad[t][0] = -(geo.grad[t][1] + geo.grad[t][2] + geo.grad[t][3]);
   }
-  geo.elastic_volume = geo.volume;
-  if (tet_scales) {
-    if (tet_scales->size() != n)
-      throw std::invalid_argument("build_tet_geometry: " + std::to_string(tet_scales->size()) +
-                                  " tet factors for " + std::to_string(n) + " tets");
-    for (size_t t = 0; t < n; ++t) geo.elastic_volume[t] *= (*tet_scales)[t];
+  if (law && law->tet_tensors) {
+    const TetTensors& q = *law->tet_tensors;
+    if (q.size() != n)
+      throw std::invalid_argument("build_tet_geometry: " + std::to_string(q.size()) +
+                                  " tet tensors for " + std::to_string(n) + " tets");
+    geo.scales.reserve(n);
+    for (size_t t = 0; t < n; ++t) geo.scales.push_back(law->scales.times(q[t]));
   }
   return geo;
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mesh/tet_mesh.hpp"
+#include "physics/material_law.hpp"
 
 namespace mrsim {
 
@@ -13,16 +14,20 @@ using TetGradients = std::array<Vec3, 4>;  // ∇N_a, a = 0..3
 struct TetGeometry {
   std::vector<Tet> tets;
   std::vector<double> volume;        // V_t > 0
-  // V_t times the tet's calibration factor (MaterialLaw::tet_scales; V_t itself without one):
-  // what the stiffness and the damping integrate over. `volume` stays the masses' and the
-  // geometry's (lumped volumes, the Laplacian criterion, patch-test weights).
-  std::vector<double> elastic_volume;
   std::vector<TetGradients> grad;    // Σ_a ∇N_a = 0
+  // object.calibration: per_tet: each tet's tensor scales, its level's (MaterialLaw::scales)
+  // times its own factors (MaterialLaw::tet_tensors); empty: the level's for every tet. What the
+  // stiffness and the damping of the tet take; masses and geometry do not.
+  std::vector<StiffnessScales> scales;
+
+  const StiffnessScales& scales_of(int t, const StiffnessScales& level) const {
+    return scales.empty() ? level : scales[t];
+  }
 };
 
 /// Throws std::invalid_argument on a non-positive volume: meshes are checked on load.
-/// `tet_scales`: one positive factor per tet for elastic_volume (null: none).
-TetGeometry build_tet_geometry(const TetMesh& mesh, const std::vector<double>* tet_scales = nullptr);
+/// `law`: its tet_tensors, if any, give TetGeometry::scales (null: none).
+TetGeometry build_tet_geometry(const TetMesh& mesh, const MaterialLaw* law = nullptr);
 
 /// Displacement (or velocity) gradient G = Σ_b u_b ∇N_bᵀ of one tet.
 inline Mat3 tet_gradient(const TetGradients& g, const Tet& t, const Vec3* u) {

@@ -11,7 +11,8 @@ namespace mrsim {
 namespace {
 
 // Bumped whenever the fit (targets, weights, pull, stopping) changes what it returns.
-constexpr int kFitVersion = 2;  // 2: per_tet's local loads
+// 2: per_tet's local loads; 3: per_tet's seven factors per tet, sags at the finest points.
+constexpr int kFitVersion = 3;
 
 std::filesystem::path file_of(const std::filesystem::path& dir, const std::string& key) {
   return dir / ("level_calibration_" + key + ".json");
@@ -19,7 +20,7 @@ std::filesystem::path file_of(const std::filesystem::path& dir, const std::strin
 
 nlohmann::json to_json(const LevelCalibration& c) {
   nlohmann::json j = {{"scales", c.scales.components()}, {"iterations", c.iterations}};
-  if (!c.tet_scales.empty()) j["tet_scales"] = c.tet_scales;
+  if (!c.tet_tensors.empty()) j["tet_tensors"] = c.tet_tensors;
   j["local_fitted"] = c.local_fitted;
   for (const CalibrationRatios& r : kCalibrationRatios)
     j[std::string(r.quantity) + "_" + r.when] = c.*r.member;
@@ -32,10 +33,11 @@ LevelCalibration from_json(const nlohmann::json& j) {
   for (double x : s)
     if (!(x > 0)) throw std::runtime_error("non-positive factor");
   c.scales = StiffnessScales::from_components(s);
-  if (j.contains("tet_scales")) {
-    c.tet_scales = j.at("tet_scales").get<std::vector<double>>();
-    for (double x : c.tet_scales)
-      if (!(x > 0) || !std::isfinite(x)) throw std::runtime_error("a non-positive tet factor");
+  if (j.contains("tet_tensors")) {
+    c.tet_tensors = j.at("tet_tensors").get<TetTensors>();
+    for (const auto& q : c.tet_tensors)
+      for (double x : q)
+        if (!(x > 0) || !std::isfinite(x)) throw std::runtime_error("a non-positive tet factor");
   }
   for (const CalibrationRatios& r : kCalibrationRatios)
     c.*r.member = j.at(std::string(r.quantity) + "_" + r.when).get<std::vector<double>>();
@@ -78,7 +80,7 @@ std::optional<std::vector<LevelCalibration>> read_cached_calibration(
     for (const nlohmann::json& level : j.at("levels")) out.push_back(from_json(level));
     if (out.size() != meshes.size()) throw std::runtime_error("another number of levels");
     for (std::size_t l = 0; l < out.size(); ++l)
-      if (!out[l].tet_scales.empty() && out[l].tet_scales.size() != meshes[l]->tets.size())
+      if (!out[l].tet_tensors.empty() && out[l].tet_tensors.size() != meshes[l]->tets.size())
         throw std::runtime_error("per-tet factors of another mesh");
   });
   if (!read) return std::nullopt;

@@ -22,7 +22,8 @@ double level_elastic_energy(const HierarchicalSimulation& sim, int l) {
   for (int t : tets) {
     const Mat3 G = tet_gradient(m.geo.grad[t], m.geo.tets[t], u);
     const Mat3 E = m.law.strain == StrainMeasure::GreenLagrange ? green_strain(G) : cauchy_strain(G);
-    e += m.geo.elastic_volume[t] * energy_density(E, m.law) * active_share(sim.hierarchy(), l, m.geo.tets[t]);
+    e += m.geo.volume[t] * energy_density(E, m.law, m.geo.scales_of(t, m.law.scales)) *
+         active_share(sim.hierarchy(), l, m.geo.tets[t]);
   }
   return e;
 }

@@ -39,13 +39,13 @@ std::string calibration_line(int level, const LevelCalibration& c) {
   os << "; alone vs the finest level (before -> after):";
   for (size_t d = 0; d < c.sag_after.size(); ++d)
     os << " sag " << "xyz"[d] << ' ' << c.sag_before[d] << " -> " << c.sag_after[d] << ',';
-  for (size_t d = 0; d < c.peak_after.size() && !c.tet_scales.empty(); ++d)
+  for (size_t d = 0; d < c.peak_after.size() && !c.tet_tensors.empty(); ++d)
     os << " peak " << "xyz"[d] << ' ' << c.peak_before[d] << " -> " << c.peak_after[d] << ',';
   if (!c.frequency_after.empty())
     os << " f1 " << c.frequency_before[0] << " -> " << c.frequency_after[0];
-  if (!c.tet_scales.empty()) {
-    const auto [low, high] = std::minmax_element(c.tet_scales.begin(), c.tet_scales.end());
-    os << "; per-tet factors " << *low << " to " << *high;
+  if (!c.tet_tensors.empty()) {
+    const std::array<double, 2> range = c.tet_factor_range();
+    os << "; per-tet factors " << range[0] << " to " << range[1];
   }
   if (!c.local_after.empty()) {
     auto range = [&os](const std::vector<double>& r) {
@@ -80,9 +80,8 @@ LevelLaws level_laws(const Scenario& sc, const std::vector<const TetMesh*>& mesh
   }
   for (size_t l = 0; l < meshes.size(); ++l) {
     out.laws[l].scales = out.calibration[l].scales;
-    if (!out.calibration[l].tet_scales.empty())
-      out.laws[l].tet_scales =
-          std::make_shared<const std::vector<double>>(out.calibration[l].tet_scales);
+    if (!out.calibration[l].tet_tensors.empty())
+      out.laws[l].tet_tensors = std::make_shared<const TetTensors>(out.calibration[l].tet_tensors);
     if (l + 1 < meshes.size()) info(calibration_line(static_cast<int>(l), out.calibration[l]));
   }
   return out;

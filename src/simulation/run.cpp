@@ -77,9 +77,9 @@ std::vector<std::vector<NamedValues>> calibration_attributes(
   for (const LevelCalibration& c : calibration) {
     const std::array<double, 7> scales = c.scales.components();
     std::vector<NamedValues> all = {{"calibration_scales", {scales.begin(), scales.end()}}};
-    if (!c.tet_scales.empty()) {  // per_tet: the range (a coarse level may have many tets)
-      const auto [low, high] = std::minmax_element(c.tet_scales.begin(), c.tet_scales.end());
-      all.push_back({"calibration_tet_scale_range", {*low, *high}});
+    if (!c.tet_tensors.empty()) {  // per_tet: the range (a coarse level may have many tets)
+      const std::array<double, 2> range = c.tet_factor_range();
+      all.push_back({"calibration_tet_scale_range", {range[0], range[1]}});
     }
     // The finest level (and a free body's sags) have no ratios: only what exists is written.
     for (const CalibrationRatios& r : kCalibrationRatios)
@@ -293,7 +293,7 @@ class FrameWriter {
       if (coverage_changed) fill_simulated(l);
       v.simulated = simulated_[l];
       v.simulated_by = simulated_by_[l];
-      if (const auto& scales = sim_.model(l).law.tet_scales) v.calibration_scale = *scales;
+      if (const auto& tensors = sim_.model(l).law.tet_tensors) v.calibration_scale = *tensors;
     }
     if (const SkinContact* c = sim_.contact()) {
       sim_.skin_state(skin_u_, skin_v_);

@@ -66,9 +66,9 @@ std::string spectrum_key(const TetMesh& mesh, const MaterialLaw& law, bool semi_
   for (double x : {law.lambda, law.mu, law.phi, law.psi, law.density, law.scales.lambda})
     f.value(x);
   for (double x : law.scales.mu) f.value(x);
-  if (law.tet_scales) {  // object.calibration: per_tet (the keys without them stay the same)
-    f.value(law.tet_scales->size());
-    f.bytes(law.tet_scales->data(), law.tet_scales->size() * sizeof(double));
+  if (law.tet_tensors) {  // object.calibration: per_tet (the keys without them stay the same)
+    f.value(law.tet_tensors->size());
+    f.bytes(law.tet_tensors->data(), law.tet_tensors->size() * sizeof(law.tet_tensors->front()));
   }
   f.mesh(mesh);
   f.value(held.size());

@@ -1,7 +1,7 @@
 // A calibrated level's orthotropic tensor (MaterialLaw::scales) through every path that reads
 // the material: the Green–Lagrange kernel builds, the Cauchy edge matrices, the per-point
 // force, the split stiffness of the calibration fit and its lowest-mode solver; and the per-tet
-// factors of object.calibration: per_tet (MaterialLaw::tet_scales) through the same paths.
+// tensors of object.calibration: per_tet (MaterialLaw::tet_tensors) through the same paths.
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
@@ -162,53 +162,57 @@ TEST(CalibratedLaw, LowestModesAreTheDenseOnes) {
   }
 }
 
-std::vector<double> random_factors(int n, unsigned seed) {
+TetTensors random_tensors(int n, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> d(std::log(0.3), std::log(3.0));
-  std::vector<double> p(n);
-  for (double& x : p) x = std::exp(d(rng));
-  return p;
+  TetTensors q(n);
+  for (auto& t : q)
+    for (double& x : t) x = std::exp(d(rng));
+  return q;
 }
 
-// Each tet's factor multiplies its elastic and damping forces and its stable-step bounds, and
-// nothing of the masses or of the geometric weights (Laplacian criterion).
-TEST(CalibratedLaw, PerTetFactorsScaleEachTetsStiffnessNotItsMass) {
+// Each tet's seven factors make its elastic and damping forces and its stable-step bounds those
+// of its own tensor (the level's times its factors), and change nothing of the masses or of the
+// geometric weights (Laplacian criterion).
+TEST(CalibratedLaw, PerTetTensorsGiveEachTetItsOwnStiffnessNotItsMass) {
   const TetMesh mesh = jittered_box(5, 3, 3, 0.2, 11);
   for (const StrainMeasure strain : {StrainMeasure::GreenLagrange, StrainMeasure::Cauchy}) {
     MaterialLaw law = law_with(5e5, 3e4, 0.7, 20);
     law.strain = strain;
     law.scales = kScales;
     const LevelModel plain = build_level_model(mesh, law);
-    const std::vector<double> p = random_factors(plain.num_tets(), 12);
-    law.tet_scales = std::make_shared<const std::vector<double>>(p);
+    const TetTensors q = random_tensors(plain.num_tets(), 12);
+    law.tet_tensors = std::make_shared<const TetTensors>(q);
     const LevelModel scaled = build_level_model(mesh, law);
     ASSERT_EQ(scaled.mass, plain.mass);
     ASSERT_EQ(scaled.laplacian_w, plain.laplacian_w);
     ASSERT_EQ(scaled.geo.volume, plain.geo.volume);
-    for (int t = 0; t < plain.num_tets(); ++t) {
-      EXPECT_NEAR(scaled.bounds.stiffness[t], p[t] * plain.bounds.stiffness[t],
-                  1e-12 * scaled.bounds.stiffness[t]);
-      EXPECT_NEAR(scaled.bounds.damping[t], p[t] * plain.bounds.damping[t],
-                  1e-12 * scaled.bounds.damping[t]);
+    for (int t = 0; t < plain.num_tets(); t += 7) {  // each bound: the tet's tensor's
+      MaterialLaw own = law;
+      own.tet_tensors = nullptr;
+      own.scales = kScales.times(q[t]);
+      const TetEnergyBounds b = tet_energy_bounds(plain.geo, own);
+      EXPECT_EQ(scaled.bounds.stiffness[t], b.stiffness[t]) << t;
+      EXPECT_EQ(scaled.bounds.damping[t], b.damping[t]) << t;
     }
-    // One tet at a time: the level's force with only tet t's factor is plain + (p_t − 1) f_t.
     const auto u = random_field(plain.num_points(), 2e-3, 13);
     const auto v = random_field(plain.num_points(), 0.1, 14);
     ForceWorkspace ws;
     std::vector<Vec3> f_plain(plain.num_points()), f_scaled(plain.num_points());
     internal_forces(plain, u.data(), v.data(), f_plain.data(), ws);
     internal_forces(scaled, u.data(), v.data(), f_scaled.data(), ws);
-    // Direct sum of each tet's stress with its factor, per point.
+    // Direct sum of each tet's stress under its own tensor, per point.
     double scale = 0, err = 0;
     for (int i = 0; i < plain.num_points(); ++i) {
       Vec3 expected = Vec3::Zero();
       for (int s = plain.adj.inc_start[i]; s < plain.adj.inc_start[i + 1]; ++s) {
         const int t = plain.adj.inc_tet[s];
+        const StiffnessScales own = kScales.times(q[t]);
         const Mat3 G = tet_gradient(plain.geo.grad[t], plain.geo.tets[t], u.data());
         const Mat3 Gd = tet_gradient(plain.geo.grad[t], plain.geo.tets[t], v.data());
-        const Mat3 P = strain == StrainMeasure::GreenLagrange ? green_piola(G, &Gd, law)
-                                                               : cauchy_stress(G, &Gd, law);
-        expected -= p[t] * plain.geo.volume[t] * (P * plain.geo.grad[t][plain.adj.inc_local[s]]);
+        const Mat3 P = strain == StrainMeasure::GreenLagrange ? green_piola(G, &Gd, law, own)
+                                                               : cauchy_stress(G, &Gd, law, own);
+        expected -= plain.geo.volume[t] * (P * plain.geo.grad[t][plain.adj.inc_local[s]]);
       }
       scale = std::max(scale, expected.norm());
       err = std::max(err, (expected - f_scaled[i]).norm());
@@ -220,7 +224,26 @@ TEST(CalibratedLaw, PerTetFactorsScaleEachTetsStiffnessNotItsMass) {
   }
 }
 
-// The per-tet fit's pieces: K(s, p) assembled with the factors is Σ_t p_t Σ_j s_j K_tj, whose
+// Factors of one on every tet are the level's own law: the Green–Lagrange kernel's per-tet form
+// applies a tet's scales as the level's are applied, so the forces keep their bits.
+TEST(CalibratedLaw, PerTetTensorsOfOneKeepTheLevelsBits) {
+  const TetMesh mesh = jittered_box(5, 3, 3, 0.2, 17);
+  MaterialLaw law = law_with(5e5, 3e4, 0.7, 20);
+  law.scales = kScales;
+  const LevelModel plain = build_level_model(mesh, law);
+  law.tet_tensors = std::make_shared<const TetTensors>(plain.num_tets(), ComponentValues{1, 1, 1, 1, 1, 1, 1});
+  const LevelModel ones = build_level_model(mesh, law);
+  const auto u = random_field(plain.num_points(), 2e-3, 18);
+  const auto v = random_field(plain.num_points(), 0.1, 19);
+  ForceWorkspace ws;
+  std::vector<Vec3> a(plain.num_points()), b(plain.num_points());
+  internal_forces(plain, u.data(), v.data(), a.data(), ws);
+  internal_forces(ones, u.data(), v.data(), b.data(), ws);
+  EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)));
+  EXPECT_EQ(plain.bounds.stiffness, ones.bounds.stiffness);
+}
+
+// The per-tet fit's pieces: K(s, q) assembled with the factors is Σ_t Σ_j s_j q_tj K_tj, whose
 // per-tet bilinear terms sum to the parts, and the level's own linear force.
 TEST(CalibratedLaw, ComponentStiffnessPerTetTermsSumToTheParts) {
   const TetMesh mesh = jittered_box(4, 3, 2, 0.2, 15);
@@ -240,15 +263,20 @@ TEST(CalibratedLaw, ComponentStiffnessPerTetTermsSumToTheParts) {
     const double whole = a.dot(cs.parts[j] * b);
     EXPECT_NEAR(sum, whole, 1e-10 * std::abs(whole) + 1e-300) << "component " << j;
   }
-  const std::vector<double> p = random_factors(cs.num_tets(), 16);
+  const TetTensors q = random_tensors(cs.num_tets(), 16);
   const std::array<double, 7> s = kScales.components();
-  const SparseMatrix K = cs.combined(s, p);
-  std::vector<double> ones(cs.num_tets(), 1.0);
+  const SparseMatrix K = cs.combined(s, q);
+  const TetTensors ones(cs.num_tets(), ComponentValues{1, 1, 1, 1, 1, 1, 1});
   EXPECT_LT((Eigen::MatrixXd(cs.combined(s, ones)) - Eigen::MatrixXd(cs.combined(s))).norm(),
             1e-12 * Eigen::MatrixXd(cs.combined(s)).norm());
+  // Σ_t Σ_j s_j q_tj aᵀK_tj b from the terms is aᵀ K(s, q) b.
+  double by_terms = 0;
+  for (int t = 0; t < cs.num_tets(); ++t)
+    for (int j = 0; j < 7; ++j) by_terms += s[j] * q[t][j] * terms[t][j];
+  EXPECT_NEAR(by_terms, a.dot(K * b), 1e-10 * std::abs(by_terms));
   // ... and is the linear force of a level built with those factors.
   law.scales = kScales;
-  law.tet_scales = std::make_shared<const std::vector<double>>(p);
+  law.tet_tensors = std::make_shared<const TetTensors>(q);
   const LevelModel m = build_level_model(mesh, law, false, fixed);
   std::vector<Vec3> u(n, Vec3::Zero()), v(n, Vec3::Zero()), f(n);
   for (int i = 0; i < n; ++i)

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <memory>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -24,11 +25,25 @@ TetGradients reference(const LevelModel& m, int t, const Vec3* u, const Vec3* v)
   const TetGradients& g = m.geo.grad[t];
   const Mat3 G = tet_gradient(g, m.geo.tets[t], u);
   const Mat3 Gd = tet_gradient(g, m.geo.tets[t], v);
-  Mat3 P = green_piola(G, m.law.damped() ? &Gd : nullptr, m.law);
+  Mat3 P = green_piola(G, m.law.damped() ? &Gd : nullptr, m.law, m.geo.scales_of(t, m.law.scales));
   P *= -m.geo.volume[t];
   TetGradients out;
   for (int a = 0; a < 4; ++a) out[a].noalias() = P * g[a];
   return out;
+}
+
+// object.calibration: per_tet's tensors on `law` (random factors about a calibrated level's), or
+// none: the kernel's per-tet form against green_piola() with each tet's scales.
+void set_tet_tensors(MaterialLaw& law, bool per_tet, int tets, std::mt19937& rng) {
+  law.scales = per_tet ? StiffnessScales::from_components({0.7, 1.3, 0.4, 2.1, 0.9, 1.6, 0.5})
+                       : StiffnessScales{};
+  law.tet_tensors = nullptr;
+  if (!per_tet) return;
+  std::uniform_real_distribution<double> d(0.3, 3.0);
+  TetTensors q(tets);
+  for (auto& t : q)
+    for (double& x : t) x = d(rng);
+  law.tet_tensors = std::make_shared<const TetTensors>(std::move(q));
 }
 
 using Kernel = void (*)(const GreenKernelData&, const int*, int, const double (*)[3],
@@ -52,6 +67,7 @@ TEST(GreenNodalForces, BitIdenticalToGreenPiola) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> jitter(-0.002, 0.002);
   for (Vec3& p : mesh.points) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
+  for (const bool per_tet : {false, true})
   for (const bool damped : {false, true})
     for (const double amplitude : {1e-4, 3e-2}) {
       MaterialLaw law;
@@ -62,6 +78,7 @@ TEST(GreenNodalForces, BitIdenticalToGreenPiola) {
         law.phi = 0.7;
         law.psi = 20;
       }
+      set_tet_tensors(law, per_tet, static_cast<int>(mesh.tets.size()), rng);
       const LevelModel m = build_level_model(mesh, law);
       std::uniform_real_distribution<double> d(-amplitude, amplitude);
       std::vector<Vec3> u(m.num_points()), v(m.num_points());
@@ -95,7 +112,7 @@ TEST(GreenNodalForces, BitIdenticalToGreenPiola) {
             const TetGradients expected = reference(m, t, u.data(), v.data());
             ASSERT_EQ(std::memcmp(&expected, &out[t], sizeof(TetGradients)), 0)
                 << name << " kernel, tet " << t << (damped ? " damped" : "") << " amplitude "
-                << amplitude;
+                << amplitude << (per_tet ? " per-tet tensors" : "");
           }
         }
     }
@@ -155,8 +172,10 @@ TEST(GreenScatterForces, BitIdenticalToTheGatherOfGreenPiola) {
   law.strain = StrainMeasure::GreenLagrange;
   law.lambda = 5.0e5;
   law.mu = 3.0e4;
+  for (const bool tensors : {false, true})
   for (const bool damped : {false, true}) {
     law.psi = damped ? 20 : 0;
+    set_tet_tensors(law, tensors, static_cast<int>(mesh.tets.size()), rng);
     const LevelModel m = build_level_model(mesh, law);
     std::uniform_real_distribution<double> d(-3e-2, 3e-2);
     std::vector<Vec3> u(m.num_points()), v(m.num_points());
@@ -197,7 +216,8 @@ TEST(GreenScatterForces, BitIdenticalToTheGatherOfGreenPiola) {
                   reinterpret_cast<const double(*)[3]>(v.data()),
                   GreenScatterTarget{w, mask.data(), reinterpret_cast<double(*)[3]>(f.data())});
         EXPECT_EQ(std::memcmp(expected.data(), f.data(), f.size() * sizeof(Vec3)), 0)
-            << name << (weighted ? " weighted" : "") << (damped ? " damped" : "");
+            << name << (weighted ? " weighted" : "") << (damped ? " damped" : "")
+            << (tensors ? " per-tet tensors" : "");
       }
       // The same list from its contiguous copy (physics/packed_tets.hpp), the level's weights
       // gathered into it: the same bits.
@@ -207,7 +227,8 @@ TEST(GreenScatterForces, BitIdenticalToTheGatherOfGreenPiola) {
       green_scatter_packed(m, packed, u.data(), v.data(), weighted ? weight.data() : nullptr,
                            mask.data(), f.data());
       EXPECT_EQ(std::memcmp(expected.data(), f.data(), f.size() * sizeof(Vec3)), 0)
-          << "packed" << (weighted ? " weighted" : "") << (damped ? " damped" : "");
+          << "packed" << (weighted ? " weighted" : "") << (damped ? " damped" : "")
+          << (tensors ? " per-tet tensors" : "");
     }
   }
 }
@@ -222,7 +243,7 @@ TEST(PackedTets, RecognisesOnlyTheListItPacked) {
   EXPECT_TRUE(packed.packs(IndexSet::of(list)));
   for (int k = 0; k < 5; ++k) {
     EXPECT_EQ(packed.tets[k], m.geo.tets[list[k]]);
-    EXPECT_EQ(packed.elastic_volume[k], m.geo.elastic_volume[list[k]]);
+    EXPECT_EQ(packed.volume[k], m.geo.volume[list[k]]);
     EXPECT_EQ(packed.order[k], k);
   }
   const std::vector<int> same_ids = list;  // equal, but another list: not recognised

@@ -84,8 +84,8 @@ def test_split_checks(binary, source, tmp):
     # difference is then the end's, where the still beam's tip region has coarsened.
     whole = np.abs(b - ref).max() / peak
     check(whole <= 0.2, "over 1 s, every frame within %.3f of beam_L2 alone's peak (<= 0.2)" % whole)
-    # With a factor per tet the frame-end decisions alone keep the band (docs/hierarchy.md
-    # "Per-tet factors": 0.17; orthotropic at frame ends 0.20, uncalibrated 0.68).
+    # With a tensor per tet the frame-end decisions alone keep the band (docs/hierarchy.md
+    # "Per-tet tensors": 0.14; orthotropic at frame ends 0.20, uncalibrated 0.68).
     per_tet = [s.replace("orthotropic", "per_tet") for s in sets]
     _, _, _, out_pt = run(binary, source, tmp, "beam_adaptive.yaml", "beam_per_tet", per_tet)
     whole = np.abs(ce.curve(out_pt, select) - ref).max() / peak
@@ -187,12 +187,12 @@ def test_calibration_logged(binary, source, tmp):
 
 
 def test_per_tet_calibration(binary, source, tmp):
-    """object.calibration: per_tet gives each tet of a coarser beam level a factor on top of
-    the level's tensor: the console line says their range and the peaks, log.h5 has the range
-    (calibration_tet_scale_range) and the fitted peaks, the frames a `calibration_scale` cell
-    array on the coarser level blocks; the per-tet factors round-trip through the cache (a
-    second run reads them and is the same run, bit for bit), apart from the level-wide fit's
-    file."""
+    """object.calibration: per_tet gives each tet of a coarser beam level seven factors on top
+    of the level's tensor: the console line says their range and the peaks, log.h5 has the
+    range (calibration_tet_scale_range) and the fitted peaks, the frames a 7-component
+    `calibration_scale` cell array on the coarser level blocks; the per-tet factors round-trip
+    through the cache (a second run reads them and is the same run, bit for bit), apart from the
+    level-wide fit's file."""
     cache = os.path.join(tmp, "cache_per_tet")
     out = os.path.join(tmp, "per_tet")
     said = run_calibrated(binary, source, out, cache, "per_tet", vtk=True)
@@ -202,24 +202,32 @@ def test_per_tet_calibration(binary, source, tmp):
     with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
         levels = [h5["/levels/level_%d" % k].attrs for k in range(3)]
         ranges = [np.asarray(levels[k]["calibration_tet_scale_range"]) for k in range(2)]
+        level_scales = [np.asarray(levels[k]["calibration_scales"]) for k in range(2)]
         peak = np.asarray(levels[1]["calibration_peak_ratio_after"])
         local = np.asarray(levels[1]["calibration_local_ratio_after"])
         f1 = float(levels[1]["calibration_frequency_ratio_after"][0])
         check("calibration_tet_scale_range" not in levels[2], "none on the finest level")
-    check(all(0 < r[0] <= r[1] for r in ranges) and ranges[1][1] <= 5.0 + 1e-9,
-          "per-tet factors positive, level 1's at most 5 (%s)" % [np.round(r, 3) for r in ranges])
+    check(all(0 < r[0] <= r[1] for r in ranges),
+          "per-tet factors positive (%s)" % [np.round(r, 3) for r in ranges])
     check(np.all(np.abs(peak - 1) < 0.05) and abs(f1 - 1) < 0.05,
           "beam L1 alone within 5 %% of L2 on its peaks (%s) and f1 (%.3f)" % (np.round(peak, 3), f1))
-    check(len(local) == 12 and np.all(np.abs(local - 1) < 0.05),
-          "beam L1 alone within 5 %% of L2 under its twelve local loads (%s)" % np.round(local, 3))
+    check(len(local) == 12 and np.all(np.abs(local - 1) < 0.08),
+          "beam L1 alone within 8 %% of L2 under its twelve local loads (%s)" % np.round(local, 3))
     frame = blocks(os.path.join(out, "frames", "frame_000001.vtm"))
     cells = [frame["level_%d" % k][1].get("cell:calibration_scale") for k in range(3)]
     check(all(c is not None for c in cells[:2]) and cells[2] is None
-          and all(len(cells[k]) == frame["level_%d" % k][2].GetNumberOfCells() for k in range(2))
+          and all(np.shape(cells[k]) == (frame["level_%d" % k][2].GetNumberOfCells(), 7)
+                  for k in range(2))
           and all(np.isclose(cells[k].min(), ranges[k][0]) and np.isclose(cells[k].max(), ranges[k][1])
                   for k in range(2)),
-          "the frames carry each coarser level's factors per tet (calibration_scale), none on "
-          "the finest level")
+          "the frames carry each coarser level's seven factors per tet (calibration_scale), none "
+          "on the finest level")
+    names = frame["level_0"][2].GetCellData().GetArray("calibration_scale")
+    check([names.GetComponentName(j) for j in range(7)]
+          == ["lambda", "xx", "yy", "zz", "yz", "xz", "xy"], "its components are named")
+    check(all(np.all(cells[k] * level_scales[k] <= 5.0 + 1e-9) for k in range(2)),
+          "no component of any tet's tensor above 5 times the material's (%s)"
+          % [float(np.max(cells[k] * level_scales[k])) for k in range(2)])
     again = os.path.join(tmp, "per_tet_again")
     check("read from the cache" in run_calibrated(binary, source, again, cache, "per_tet", vtk=True),
           "the second per_tet run reads the cache")

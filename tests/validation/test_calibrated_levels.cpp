@@ -1,10 +1,11 @@
-// Issue 16 point 1: each bundled coarse level alone, calibrated with a factor per tet
+// Issue 16 point 1: each bundled coarse level alone, calibrated with a tensor per tet
 // (object.calibration: per_tet, hierarchy/level_calibration.hpp), against its finest level
 // alone: the largest displacement under vertical gravity and the first frequency, both of the
 // same linear problem (held as the bundled scenarios hold it). Each record is the worst
 // |ratio − 1| over the object's coarse levels; the note has every level's ratios, before and
 // after the fit. Breaking it: the level-wide fit (orthotropic) leaves the liver's peaks at
-// 0.58–0.77 of L3's, the uncalibrated levels at 0.70–0.75.
+// 0.58–0.77 of L3's, the uncalibrated levels at 0.70–0.75; one factor per tet (instead of
+// seven) left the beam's L0 tip at 0.85.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -85,11 +86,10 @@ TEST(CalibratedLevels, LittleManLevelsAloneWithinFivePercentOfTheFinest) {
                 "issue 16 asks within 5 %"});
 }
 
-TEST(CalibratedLevels, BeamLevelsAlone) {
-  // L0 is one tet across: its tip stays at 0.85 of L2's (its f1 within 5 %).
-  check_object({"beam", 3, 1e6, 0.3, [](const Vec3& p) { return std::abs(p.x()) <= 1e-3; }, 0.2,
-                "issue 16 asks within 5 % (not met: L0's tip, one tet across); 0.2 guards "
-                "the gain over 0.83 uncalibrated"});
+TEST(CalibratedLevels, BeamLevelsAloneWithinFivePercentOfTheFinest) {
+  // L0 is one tet across; with seven factors per tet its tip and f1 follow L2's too.
+  check_object({"beam", 3, 1e6, 0.3, [](const Vec3& p) { return std::abs(p.x()) <= 1e-3; }, 0.05,
+                "issue 16 asks within 5 %"});
 }
 
 }  // namespace
