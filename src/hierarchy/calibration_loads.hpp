@@ -1,6 +1,6 @@
 #pragma once
 // Local loads of the per-tet calibration (hierarchy/level_calibration.hpp, docs/hierarchy.md
-// "Per-tet factors"): a tool or a press acts on a few finest surface points, and in the
+// "Per-tet tensors"): a tool or a press acts on a few finest surface points, and in the
 // hierarchy their forces reach a coarse level through the barycentric weights of those points
 // in its tets (ghost force transfer, method.md §4.1). So each load is a unit force spread
 // evenly over the finest level's free boundary points within `radius` of a centre, pushing

@@ -242,7 +242,7 @@ Vector level_step(const Eigen::MatrixXd& J, const Vector& residual, const Vector
   return (-damped.ldlt().solve(g)).cwiseMax(-1.0).cwiseMin(1.0);
 }
 
-// The same with a factor per tet: (JᵀJ + D) δ = −g with D diagonal (the pulls and the damping
+// The same with factors per tet: (JᵀJ + D) δ = −g with D diagonal (the pulls and the damping
 // of diag(JᵀJ + pulls)) is solved through the rows' small system, (D + JᵀJ)⁻¹ =
 // D⁻¹ − D⁻¹Jᵀ(I + J D⁻¹Jᵀ)⁻¹J D⁻¹ (Woodbury): a dozen rows against thousands of columns.
 Vector tet_step(const Eigen::MatrixXd& J, const Vector& residual, const Vector& x,

@@ -63,8 +63,9 @@ inline constexpr CalibrationRatios kCalibrationRatios[] = {
 /// One entry per level, the last (finest) one uncalibrated. `fixed`: per level, one flag per
 /// point (as HierarchySetup::fixed). Every level must be held at three points or more, or none
 /// at all (a free body: frequencies only); anything else is an InputError.
-/// `kind` PerTet also gives each coarser level one factor per tet, fitted with the level's tensor
-/// to the finest level's largest displacements too (docs/hierarchy.md "Per-tet factors").
+/// `kind` PerTet also gives each tet of a coarser level seven factors on the level's tensor,
+/// fitted with it to the finest level's largest displacements, its sags at the finest points and
+/// its local loads too (docs/hierarchy.md "Per-tet tensors").
 std::vector<LevelCalibration> calibrate_levels(
     const std::vector<const TetMesh*>& meshes, const MaterialLaw& law,
     const std::vector<std::vector<std::uint8_t>>& fixed,
