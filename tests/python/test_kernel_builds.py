@@ -3,8 +3,10 @@
 bit (issue 17 point 4: faster instruction sets without changing a result): liver_probe (four
 adaptive levels, a tool, Green-Lagrange, damped) cut short, run with MRSIM_KERNEL set to each
 build `mrsim --version` lists, compared at rtol = atol = 0 with `mrsim compare` (log.h5, every
-VTU array, summary.json); summary.json names the build that ran. An unknown or unsupported
-build is an input error (exit 2) that names the builds the processor runs."""
+VTU array, summary.json); summary.json names the build that ran. The same for the kernels'
+per-tet form (object.calibration: per_tet, each coarse tet its own tensor) on beam_adaptive, and
+two threads against one. An unknown or unsupported build is an input error (exit 2) that names
+the builds the processor runs."""
 import json
 import os
 import sys
@@ -34,6 +36,29 @@ def builds_listed(binary):
     default = line.split(":")[1].split()[0] if ":" in line else ""
     listed = line.split("runs ")[1].split(";")[0].split(", ") if "runs " in line else []
     return default, listed
+
+
+def same_runs(binary, tmp, cache, scenario, sets, builds, default, what):
+    """Runs `scenario` with each build (one thread) and the default build on two threads;
+    checks that they all give the first's run bit for bit."""
+    outs = {}
+    for build, threads in [(b, "1") for b in builds] + [(default, "2")]:
+        out = os.path.join(tmp, "%s_%s_%s" % (what, build, threads))
+        args = ["run", scenario, "-o", out, "-q", "--threads", threads]
+        for s in sets:
+            args += ["--set", s]
+        r = run(binary, *args, kernel=build, cache=cache)
+        if check(r.returncode == 0, "%s, MRSIM_KERNEL=%s, %s thread(s): exits 0 (%s)"
+                 % (what, build, threads, r.stderr.strip()[-300:])):
+            outs[(build, threads)] = out
+    first = outs.get((default, "1"))
+    for key, out in outs.items():
+        if first is None or out == first:
+            continue
+        r = run(binary, "compare", first, out, "--rtol", "0", "--atol", "0")
+        check(r.returncode == 0 and "identical" in r.stdout,
+              "%s: %s on %s thread(s) gives the %s one-thread run bit for bit: %s"
+              % (what, key[0], key[1], default, r.stdout.strip().splitlines()[-1:]))
 
 
 def main():
@@ -66,6 +91,8 @@ def main():
             check(r.returncode == 0 and "identical" in r.stdout,
                   "%s and %s give the same run bit for bit: %s"
                   % (default, build, r.stdout.strip().splitlines()[-1:]))
+        same_runs(args.binary, tmp, cache, os.path.join(args.source, "scenarios", "beam_adaptive.yaml"),
+                  ["time.duration=0.2", "object.calibration=per_tet"], listed, default, "per_tet beam")
         r = run(args.binary, "run", scenario, "-o", os.path.join(tmp, "bad"), "-q",
                 kernel="sse9", cache=cache)
         check(r.returncode == 2 and "MRSIM_KERNEL" in r.stderr and "baseline" in r.stderr
