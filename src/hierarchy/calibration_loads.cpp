@@ -64,15 +64,20 @@ std::vector<Eigen::VectorXd> to_level(const std::vector<Eigen::VectorXd>& fine_f
   return out;
 }
 
-std::vector<Eigen::VectorXd> level_loads(const std::vector<LocalLoad>& loads,
-                                         const TetMesh& finest, const TetMesh& level) {
-  std::vector<Eigen::VectorXd> fine;
+std::vector<Eigen::VectorXd> point_forces(const std::vector<LocalLoad>& loads,
+                                          const TetMesh& finest) {
+  std::vector<Eigen::VectorXd> out;
   for (const LocalLoad& load : loads) {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * static_cast<Eigen::Index>(finest.points.size()));
     for (int i : load.points) f.segment<3>(3 * i) = load.force;
-    fine.push_back(std::move(f));
+    out.push_back(std::move(f));
   }
-  return to_level(fine, finest, level);
+  return out;
+}
+
+std::vector<Eigen::VectorXd> level_loads(const std::vector<LocalLoad>& loads,
+                                         const TetMesh& finest, const TetMesh& level) {
+  return to_level(point_forces(loads, finest), finest, level);
 }
 
 }  // namespace mrsim

@@ -31,6 +31,10 @@ std::vector<LocalLoad> local_loads(const TetMesh& finest, const std::vector<std:
 std::vector<Eigen::VectorXd> to_level(const std::vector<Eigen::VectorXd>& fine_forces,
                                       const TetMesh& finest, const TetMesh& level);
 
+/// Each load as forces at the finest level's points (3 per point).
+std::vector<Eigen::VectorXd> point_forces(const std::vector<LocalLoad>& loads,
+                                          const TetMesh& finest);
+
 /// Each load as nodal forces of `level` (3 per point, fixed points included): each finest
 /// point's force spread on the tet of `level` that holds it (or the nearest, extrapolated), by
 /// its barycentric weights. On the finest level itself, the forces at its points.

@@ -118,10 +118,12 @@ void static_rows(const ComponentStiffness& cs, const SparseLdlt& solver, const P
   for (int d = 0; d < 3; ++d) {
     Vector f = Vector::Zero(n);  // M e_d
     for (int i = d; i < n; i += 3) f[i] = cs.mass[i];
-    // The mass-weighted mean displacement along the load, f·u / Σm: what a sag is, on a
-    // level whose mass differs from the finest one's (independent meshes of one surface).
     const Vector u = solver.solve(f);
-    if (!mean.empty()) {  // at the finest level's points: ∂(aᵀu) = −(K⁻¹a)ᵀ ∂K u (adjoint)
+    // The sag: the mass-weighted mean displacement along the load. per_tet takes it at the
+    // finest level's points (Probes::mean), ∂(aᵀu) = −(K⁻¹a)ᵀ ∂K u (adjoint); the level-wide
+    // fit as f·u / Σm with the level's own masses, which differ from the finest one's
+    // (independent meshes of one surface).
+    if (!mean.empty()) {
       const double sag = mean[d].dot(u);
       r.sag.push_back(sag);
       r.value[d] = std::log(sag);
@@ -369,11 +371,15 @@ std::vector<Vector> mean_weights(const ComponentStiffness& finest) {
   return out;
 }
 
-// per_tet's probes of a level (none for a free body or the level-wide fit).
+// per_tet's probes of a level (none for a free body or the level-wide fit): the local loads and
+// the mean weights at the finest points, carried to the level in one pass (one locator).
 Probes level_probes(const std::vector<LocalLoad>& loads, const std::vector<Vector>& means,
                     const TetMesh& finest, const TetMesh& level, const ComponentStiffness& cs) {
-  return {free_dofs(level_loads(loads, finest, level), cs),
-          free_dofs(to_level(means, finest, level), cs)};
+  std::vector<Vector> fine = point_forces(loads, finest);
+  fine.insert(fine.end(), means.begin(), means.end());
+  std::vector<Vector> at_level = free_dofs(to_level(fine, finest, level), cs);
+  const auto split = at_level.begin() + static_cast<std::ptrdiff_t>(loads.size());
+  return {{at_level.begin(), split}, {split, at_level.end()}};
 }
 
 int held_points(const std::vector<std::uint8_t>& fixed) {

@@ -2,6 +2,7 @@
 // with its fitted orthotropic tensor, answers like its finest level; with a factor per tet on
 // top (CalibrationKind::PerTet) its largest displacement too.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -139,6 +140,24 @@ TEST(LevelCalibration, PerTetBeamLevelsAlone) {
                 std::min({c[0].frequency_after[0], c[1].frequency_after[0], 1.0}),
             1.05)
       << "f1 spread of the per-tet beam levels";
+}
+
+// The per-tet fit's dense products are large (rows × 7 N): Eigen would split them over the
+// OpenMP threads with thread-count-dependent blockings (EIGEN_DONT_PARALLELIZE, src/CMakeLists);
+// the factors must not depend on the thread count, as no result of a run may.
+TEST(LevelCalibration, PerTetFitIsTheSameOnAnyThreadCount) {
+  const Bundled b = bundled_levels("beam", 3, [](const Vec3& p) { return std::abs(p.x()) <= 1e-3; });
+  const int threads = omp_get_max_threads();
+  std::vector<std::vector<LevelCalibration>> fits;
+  for (const int n : {1, 2}) {
+    omp_set_num_threads(n);
+    fits.push_back(calibrate_levels(b.pointers(), law(1e6, 0.3), b.fixed, CalibrationKind::PerTet));
+  }
+  omp_set_num_threads(threads);
+  for (std::size_t l = 0; l + 1 < fits[0].size(); ++l) {
+    EXPECT_EQ(fits[0][l].tet_tensors, fits[1][l].tet_tensors) << "level " << l;
+    EXPECT_EQ(fits[0][l].scales.components(), fits[1][l].scales.components()) << "level " << l;
+  }
 }
 
 TEST(LevelCalibration, AFreeBodyIsFittedOnItsFrequencies) {
