@@ -55,8 +55,6 @@ struct MaterialLaw {
   double bound_psi(const StiffnessScales& s) const { return psi * s.max_mu(); }
   double bound_lambda() const { return bound_lambda(scales); }
   double bound_mu() const { return bound_mu(scales); }
-  double bound_phi() const { return bound_phi(scales); }
-  double bound_psi() const { return bound_psi(scales); }
 };
 
 }  // namespace mrsim
