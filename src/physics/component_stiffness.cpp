@@ -101,8 +101,10 @@ ComponentStiffness component_stiffness(const TetGeometry& geo, int n, const Mate
     for (int v : geo.tets[t])
       if (out.dof_of_point[v] >= 0)
         out.mass.segment<3>(out.dof_of_point[v]).array() += law.density * geo.volume[t] / 4;
-  for (int j = 0; j < 7; ++j)
-    out.parts[j] = assemble(out, [&](int) { return component_tensor(j, law.lambda, law.mu); });
+  for (int j = 0; j < 7; ++j) {
+    const OrthotropicTensor c = component_tensor(j, law.lambda, law.mu);
+    out.parts[j] = assemble(out, [&c](int) { return c; });
+  }
   return out;
 }
 

@@ -162,6 +162,19 @@ TEST(CalibratedLaw, LowestModesAreTheDenseOnes) {
   }
 }
 
+// Two levels of one mesh at the same random displacements u and velocities v: their forces.
+struct BothForces {
+  std::vector<Vec3> u, v, a, b;
+};
+BothForces forces_of_both(const LevelModel& a, const LevelModel& b, unsigned seed) {
+  BothForces out{random_field(a.num_points(), 2e-3, seed), random_field(a.num_points(), 0.1, seed + 1),
+                 std::vector<Vec3>(a.num_points()), std::vector<Vec3>(a.num_points())};
+  ForceWorkspace ws;
+  internal_forces(a, out.u.data(), out.v.data(), out.a.data(), ws);
+  internal_forces(b, out.u.data(), out.v.data(), out.b.data(), ws);
+  return out;
+}
+
 TetTensors random_tensors(int n, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> d(std::log(0.3), std::log(3.0));
@@ -195,12 +208,8 @@ TEST(CalibratedLaw, PerTetTensorsGiveEachTetItsOwnStiffnessNotItsMass) {
       EXPECT_EQ(scaled.bounds.stiffness[t], b.stiffness[t]) << t;
       EXPECT_EQ(scaled.bounds.damping[t], b.damping[t]) << t;
     }
-    const auto u = random_field(plain.num_points(), 2e-3, 13);
-    const auto v = random_field(plain.num_points(), 0.1, 14);
-    ForceWorkspace ws;
-    std::vector<Vec3> f_plain(plain.num_points()), f_scaled(plain.num_points());
-    internal_forces(plain, u.data(), v.data(), f_plain.data(), ws);
-    internal_forces(scaled, u.data(), v.data(), f_scaled.data(), ws);
+    const BothForces f = forces_of_both(plain, scaled, 13);
+    const std::vector<Vec3>&u = f.u, &v = f.v, &f_plain = f.a, &f_scaled = f.b;
     // Direct sum of each tet's stress under its own tensor, per point.
     double scale = 0, err = 0;
     for (int i = 0; i < plain.num_points(); ++i) {
@@ -233,13 +242,8 @@ TEST(CalibratedLaw, PerTetTensorsOfOneKeepTheLevelsBits) {
   const LevelModel plain = build_level_model(mesh, law);
   law.tet_tensors = std::make_shared<const TetTensors>(plain.num_tets(), ComponentValues{1, 1, 1, 1, 1, 1, 1});
   const LevelModel ones = build_level_model(mesh, law);
-  const auto u = random_field(plain.num_points(), 2e-3, 18);
-  const auto v = random_field(plain.num_points(), 0.1, 19);
-  ForceWorkspace ws;
-  std::vector<Vec3> a(plain.num_points()), b(plain.num_points());
-  internal_forces(plain, u.data(), v.data(), a.data(), ws);
-  internal_forces(ones, u.data(), v.data(), b.data(), ws);
-  EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)));
+  const BothForces f = forces_of_both(plain, ones, 18);
+  EXPECT_EQ(0, std::memcmp(f.a.data(), f.b.data(), f.a.size() * sizeof(Vec3)));
   EXPECT_EQ(plain.bounds.stiffness, ones.bounds.stiffness);
 }
 
