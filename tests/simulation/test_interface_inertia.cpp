@@ -9,7 +9,10 @@
 
 #include "coupled_operator.hpp"
 #include "hierarchy/hierarchy_fixture.hpp"
+#include "hierarchy/level_calibration.hpp"
 #include "mesh/box_mesh.hpp"
+#include "scenario/material.hpp"
+#include "support/bundled_levels.hpp"
 
 using namespace mrsim;
 
@@ -27,8 +30,9 @@ std::vector<const TetMesh*> pointers(const std::vector<TetMesh>& meshes) {
   return p;
 }
 
-// True critical step 2/ω_max of the current configuration, with the masses the step uses.
-double critical_step(HierarchicalSimulation& sim) {
+// The eigenvalues ω² of the current configuration's coupled operator, with the masses the step
+// uses, ascending.
+Eigen::VectorXd coupled_w2(HierarchicalSimulation& sim) {
   std::vector<std::pair<int, int>> dofs;
   Eigen::MatrixXd K = mrsim::testing::coupled_stiffness(sim, dofs);
   K = 0.5 * (K + K.transpose());
@@ -36,8 +40,12 @@ double critical_step(HierarchicalSimulation& sim) {
   for (int i = 0; i < K.rows(); ++i)
     s[i] = 1.0 / std::sqrt(sim.inertia(dofs[i / 3].first)[dofs[i / 3].second].mass);
   const Eigen::MatrixXd A = s.asDiagonal() * K * s.asDiagonal();
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(A, Eigen::EigenvaluesOnly);
-  return 2.0 / std::sqrt(es.eigenvalues().maxCoeff());
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(A, Eigen::EigenvaluesOnly).eigenvalues();
+}
+
+// True critical step 2/ω_max of the current configuration, with the masses the step uses.
+double critical_step(HierarchicalSimulation& sim) {
+  return 2.0 / std::sqrt(coupled_w2(sim).maxCoeff());
 }
 
 // Splits a random third of the splittable active points, `rounds` times coarse to fine.
@@ -175,4 +183,63 @@ TEST(InterfaceInertia, ALevelWithoutGhostsKeepsItsLumpedMassBitForBit) {
   const auto meshes = mrsim::testing::jittered_box_levels({{3, 2, 2}, {6, 4, 3}}, 5, 0.2);
   HierarchicalSimulation sim(pointers(meshes), clamped_setup(meshes, Coupling::Energy));
   for (int p : sim.lists().active(0)) EXPECT_EQ(sim.inertia(0)[p].mass, sim.model(0).mass[p]);
+}
+
+TEST(InterfaceInertia, AMixedBeamVibratesWithinFourPercentOfItsFinestLevel) {
+  // The bundled beam levels with per-tet tensors (each level alone within 0.4 % of L2's f1),
+  // its free end on level 1 and the rest on level 2, as beam_adaptive leaves it once the tip
+  // has merged back. The ghosts near the interface pass b² of their mass on and lose the rest:
+  // 3–4 % of the beam's mass, most of it where the first mode moves most, so f1 is 2.9–3.4 %
+  // (energy) and 1.9–2.4 % (energy_consistent) above level 2 alone's, though each level alone
+  // is within 0.4 % of it. That is what makes the adaptive beam drift off its finest level over
+  // a second (docs/hierarchy.md "Interface mass"); keeping the rest on the ghosts' own active
+  // vertices gave 0.5–0.9 % and −1.1–−0.5 % (branch wip/conserving-interface-mass, not landed:
+  // other runs moved away). This holds the gap where it is: no worse than 4 %.
+  const auto b = test_support::bundled_levels("beam", 3, [](const Vec3& p) { return p.x() <= 1e-3; });
+  const scenario::LameParameters lame = scenario::lame_from_engineering({1e6, 0.3});
+  MaterialLaw law;
+  law.strain = StrainMeasure::Cauchy;
+  law.lambda = lame.lambda;
+  law.mu = lame.mu;
+  const auto cal = calibrate_levels(b.pointers(), law, b.fixed, CalibrationKind::PerTet);
+  auto setup = [&](Coupling c, int levels) {
+    HierarchySetup hs;
+    hs.law = law;
+    hs.coupling = c;
+    hs.fixed.assign(b.fixed.end() - levels, b.fixed.end());
+    for (int l = 3 - levels; l < 3; ++l) {
+      MaterialLaw ll = law;
+      ll.scales = cal[l].scales;
+      if (!cal[l].tet_tensors.empty())
+        ll.tet_tensors = std::make_shared<const TetTensors>(cal[l].tet_tensors);
+      hs.level_laws.push_back(ll);
+    }
+    return hs;
+  };
+  auto f1 = [](HierarchicalSimulation& sim) { return std::sqrt(coupled_w2(sim).minCoeff()) / (2 * M_PI); };
+  HierarchicalSimulation alone({&b.meshes[2]}, setup(Coupling::Energy, 1));
+  const double finest = f1(alone);
+  for (Coupling c : {Coupling::Energy, Coupling::EnergyConsistent})
+    for (double tip : {0.07, 0.085}) {  // level 1 beyond x = tip
+      HierarchicalSimulation sim(b.pointers(), setup(c, 3));
+      for (int p : std::vector<int>(sim.lists().active(0)))
+        if (sim.hierarchy().can_split(0, p)) sim.split(0, p);
+      sim.apply_changes();
+      for (int p : std::vector<int>(sim.lists().active(1)))
+        if (sim.model(1).mesh->points[p].x() < tip && sim.hierarchy().can_split(1, p)) sim.split(1, p);
+      sim.apply_changes();
+      ASSERT_GT(sim.lists().active(1).size(), 15u);
+      ASSERT_GT(sim.lists().active(2).size(), 300u);
+      const double ratio = f1(sim) / finest;
+      double inertial = 0, gravitational = 0;
+      for (int l = 0; l < 3; ++l)
+        for (int p : sim.lists().active(l)) {
+          inertial += sim.inertia(l)[p].mass;
+          gravitational += sim.inertia(l)[p].gravity_mass;
+        }
+      std::printf("coupling %d, level 1 beyond x = %.3f: f1 / level 2 alone's %.4f; inertial / "
+                  "gravitational mass %.4f\n", static_cast<int>(c), tip, ratio,
+                  inertial / gravitational);
+      EXPECT_NEAR(ratio, 1.0, 0.04) << "level 1 beyond x = " << tip;
+    }
 }
