@@ -189,13 +189,14 @@ TEST(InterfaceInertia, AMixedBeamVibratesWithinFourPercentOfItsFinestLevel) {
   // The bundled beam levels with per-tet tensors (each level alone within 0.4 % of L2's f1),
   // its free end on level 1 and the rest on level 2, as beam_adaptive leaves it once the tip
   // has merged back. The ghosts near the interface pass b² of their mass on and lose the rest:
-  // 3–4 % of the beam's mass, most of it where the first mode moves most, so f1 is 2.9–3.4 %
+  // 2–3 % of the beam's mass, most of it where the first mode moves most, so f1 is 2.9–3.4 %
   // (energy) and 1.9–2.4 % (energy_consistent) above level 2 alone's, though each level alone
-  // is within 0.4 % of it. That is what makes the adaptive beam drift off its finest level over
-  // a second (docs/hierarchy.md "Interface mass"); keeping the rest on the ghosts' own active
+  // is within 0.4 % of it: one reason the adaptive beam drifts off its finest level over a
+  // second (docs/hierarchy.md "Interface mass"). Keeping the rest on the ghosts' own active
   // vertices gave 0.5–0.9 % and −1.1–−0.5 % (branch wip/conserving-interface-mass, not landed:
   // other runs moved away). This holds the gap where it is: no worse than 4 %.
-  const auto b = test_support::bundled_levels("beam", 3, [](const Vec3& p) { return p.x() <= 1e-3; });
+  const auto b =
+      test_support::bundled_levels("beam", 3, [](const Vec3& p) { return p.x() <= 1e-3; });
   const scenario::LameParameters lame = scenario::lame_from_engineering({1e6, 0.3});
   MaterialLaw law;
   law.strain = StrainMeasure::Cauchy;
@@ -216,7 +217,9 @@ TEST(InterfaceInertia, AMixedBeamVibratesWithinFourPercentOfItsFinestLevel) {
     }
     return hs;
   };
-  auto f1 = [](HierarchicalSimulation& sim) { return std::sqrt(coupled_w2(sim).minCoeff()) / (2 * M_PI); };
+  auto f1 = [](HierarchicalSimulation& sim) {
+    return std::sqrt(coupled_w2(sim).minCoeff()) / (2 * M_PI);
+  };
   HierarchicalSimulation alone({&b.meshes[2]}, setup(Coupling::Energy, 1));
   const double finest = f1(alone);
   for (Coupling c : {Coupling::Energy, Coupling::EnergyConsistent})
@@ -226,7 +229,8 @@ TEST(InterfaceInertia, AMixedBeamVibratesWithinFourPercentOfItsFinestLevel) {
         if (sim.hierarchy().can_split(0, p)) sim.split(0, p);
       sim.apply_changes();
       for (int p : std::vector<int>(sim.lists().active(1)))
-        if (sim.model(1).mesh->points[p].x() < tip && sim.hierarchy().can_split(1, p)) sim.split(1, p);
+        if (sim.model(1).mesh->points[p].x() < tip && sim.hierarchy().can_split(1, p))
+          sim.split(1, p);
       sim.apply_changes();
       ASSERT_GT(sim.lists().active(1).size(), 15u);
       ASSERT_GT(sim.lists().active(2).size(), 300u);
