@@ -3,6 +3,7 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "core/error.hpp"
 #include "hierarchy/calibration_loads.hpp"
@@ -394,6 +395,12 @@ std::array<double, 2> LevelCalibration::tet_factor_range() const {
   for (const auto& q : tet_tensors)
     for (double x : q) r = {std::min(r[0], x), std::max(r[1], x)};
   return r;
+}
+
+MaterialLaw LevelCalibration::applied_to(MaterialLaw law) const {
+  law.scales = scales;
+  if (!tet_tensors.empty()) law.tet_tensors = std::make_shared<const TetTensors>(tet_tensors);
+  return law;
 }
 
 std::vector<LevelCalibration> calibrate_levels(

@@ -31,6 +31,8 @@ struct LevelCalibration {
   TetTensors tet_tensors;
   /// The smallest and largest of the per-tet factors, any component ({1, 1} without them).
   std::array<double, 2> tet_factor_range() const;
+  /// `law` as this level simulates it: the level's scales and, with PerTet, its tets' tensors.
+  MaterialLaw applied_to(MaterialLaw law) const;
   // The level alone against the finest level, before and after the fit (ratios): mean and
   // largest displacement under gravity along x, y, z (empty for a free body; the largest is
   // fitted by PerTet only) and the six lowest frequencies.

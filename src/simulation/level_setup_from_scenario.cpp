@@ -79,9 +79,7 @@ LevelLaws level_laws(const Scenario& sc, const std::vector<const TetMesh*>& mesh
     write_cached_calibration(cache, key, out.calibration);
   }
   for (size_t l = 0; l < meshes.size(); ++l) {
-    out.laws[l].scales = out.calibration[l].scales;
-    if (!out.calibration[l].tet_tensors.empty())
-      out.laws[l].tet_tensors = std::make_shared<const TetTensors>(out.calibration[l].tet_tensors);
+    out.laws[l] = out.calibration[l].applied_to(law);
     if (l + 1 < meshes.size()) info(calibration_line(static_cast<int>(l), out.calibration[l]));
   }
   return out;

@@ -208,13 +208,7 @@ TEST(InterfaceInertia, AMixedBeamVibratesWithinFourPercentOfItsFinestLevel) {
     hs.law = law;
     hs.coupling = c;
     hs.fixed.assign(b.fixed.end() - levels, b.fixed.end());
-    for (int l = 3 - levels; l < 3; ++l) {
-      MaterialLaw ll = law;
-      ll.scales = cal[l].scales;
-      if (!cal[l].tet_tensors.empty())
-        ll.tet_tensors = std::make_shared<const TetTensors>(cal[l].tet_tensors);
-      hs.level_laws.push_back(ll);
-    }
+    for (int l = 3 - levels; l < 3; ++l) hs.level_laws.push_back(cal[l].applied_to(law));
     return hs;
   };
   auto f1 = [](HierarchicalSimulation& sim) {
