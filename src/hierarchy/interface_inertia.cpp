@@ -30,22 +30,68 @@ void weighted_star(const InertiaLevel& lv, const StatusLists& lists, int l,
   }
 }
 
+// What a level's ghosts received from its own tets (before any chain): where the mass they
+// cannot pass on goes back to.
+std::vector<double> own_masses(const InertiaLevel& lv, const StatusLists& lists, int l,
+                               const std::vector<PointInertia>& out) {
+  std::vector<double> own;
+  if (!lv.weight) return own;
+  own.assign(out.size(), 0.0);
+  for (const auto* ghosts : {&lists.ghost_iface(l), &lists.ghost_sub(l)})
+    for (int g : *ghosts) own[g] = out[g].mass;
+  return own;
+}
+
 // A ghost's mass to the vertices of its source tet (one ghost of `ghosts`): the diagonal of its
-// consistent mass, hop by hop along a chain of ghosts.
-void pass_mass_on(const std::vector<int>& ghosts, const Embedding& emb,
-                  const TetMesh& source_mesh, const std::vector<std::uint8_t>& free_point,
+// consistent mass, b_k² to source k, hop by hop along a chain of ghosts. What that leaves,
+// (1 − Σ b_k²) of it, stays on the ghost's own level: each of its tets gives the active
+// vertices it has (one at least: a live tet has a share) the part it gave the ghost, so the
+// total inertial mass is the simulated volume's. Without it a mixed beam lost 4 % of its mass
+// near the interface and vibrated 3.4 % faster than either level alone. A ghost with nothing of
+// its own (a link of a chain) passes its mass on in the proportions b_k² / Σ b_j², whole.
+void pass_mass_on(const std::vector<int>& ghosts, const Embedding& emb, const TetMesh& source_mesh,
+                  const Hierarchy& h, int l, const InertiaLevel& lv,
+                  const std::vector<double>& own, std::vector<double>& stay,
                   std::vector<PointInertia>& from, std::vector<PointInertia>& to) {
+  bool left = false;
   for (int g : ghosts) {
-    if (!free_point[g]) continue;  // held by the support, like its force
+    if (!(*lv.free_point)[g]) continue;  // held by the support, like its force
     const Bary& b = emb.bary[g];
     const Tet& t = source_mesh.tets[emb.tet[g]];
     const PointInertia& p = from[g];
+    double squares = 0;
+    for (int k = 0; k < 4; ++k) squares += b[k] * b[k];
+    const bool keeps = !own.empty() && own[g] > 0;
+    const double scale = keeps ? 1.0 : 1.0 / squares;  // Σ b_k² ≥ 1/4 when Σ b_k = 1
     for (int k = 0; k < 4; ++k) {
       PointInertia& q = to[t[k]];
-      q.mass += b[k] * b[k] * p.mass;
+      q.mass += scale * b[k] * b[k] * p.mass;
       q.gravity_mass += b[k] * p.gravity_mass;
     }
+    if (keeps && squares < 1) {  // signed weights (a ghost outside its source mesh) pass more
+      stay[g] = (1 - squares) * p.mass / own[g];  // per unit of what its tets gave it
+      left = true;
+    }
   }
+  if (!left) return;
+  const LevelModel& m = *lv.model;
+  const double rho = m.law.density;
+  for (int t : *lv.tets) {
+    const double w = (*lv.weight)[t];
+    if (w == 0) continue;
+    const Tet& tet = m.geo.tets[t];
+    double stays = 0;
+    int active = 0;
+    for (int a = 0; a < 4; ++a) {
+      if (h.state(l, tet[a]) == NodeState::Active) ++active;
+      else stays += stay[tet[a]];
+    }
+    if (stays == 0 || active == 0) continue;
+    const double each = stays * w * rho * m.geo.volume[t] / 4.0 / active;
+    for (int a = 0; a < 4; ++a)
+      if (h.state(l, tet[a]) == NodeState::Active) from[tet[a]].mass += each;
+  }
+  for (int g : ghosts) stay[g] = 0;
 }
 
 struct OwnBound {
@@ -110,12 +156,17 @@ void interface_inertia(const Hierarchy& h, const StatusLists& lists,
   }
   // The order of transfer_ghost_forces: a chain of ghosts hands its mass on until it reaches
   // active points.
+  std::vector<std::vector<double>> own_mass(L), stay(L);
+  for (int l = 0; l < L; ++l) {
+    own_mass[l] = own_masses(levels[l], lists, l, out[l]);
+    stay[l].assign(own_mass[l].size(), 0.0);
+  }
   for (int l = L - 1; l >= 1; --l)
-    pass_mass_on(lists.ghost_iface(l), h.links(l).parent_tet, *h.level(l - 1).mesh,
-                 *levels[l].free_point, out[l], out[l - 1]);
+    pass_mass_on(lists.ghost_iface(l), h.links(l).parent_tet, *h.level(l - 1).mesh, h, l,
+                 levels[l], own_mass[l], stay[l], out[l], out[l - 1]);
   for (int l = 0; l + 1 < L; ++l)
-    pass_mass_on(lists.ghost_sub(l), h.links(l).child_tet, *h.level(l + 1).mesh,
-                 *levels[l].free_point, out[l], out[l + 1]);
+    pass_mass_on(lists.ghost_sub(l), h.links(l).child_tet, *h.level(l + 1).mesh, h, l,
+                 levels[l], own_mass[l], stay[l], out[l], out[l + 1]);
   MergedRows rows;
   const OwnBound* next = own.data();
   for (int l = 0; l < L; ++l)

@@ -87,14 +87,17 @@ def main():
 
 def check_shifted_ladders(script, binary, quick_rows):
     """With time levels each particle's step is a power-of-two division of the frame, so one
-    ladder measures the limit only within a factor 2 above the true ratio. liver_press,
-    semi-implicit with time levels, whole run: 2.59 on the scenario's own ladder (frame 20 ms),
-    1.83 on the next (frame 20 x 2^(1/4) ms). Ladders are added while the smallest limit is
-    above 2.5 (each one is above the true ratio), and the smallest is kept, against [1, 2.5]."""
+    ladder measures the limit only within a factor 2 above the true ratio. Ladders are added
+    while the smallest limit is above 2.5 (each one is above the true ratio), and the smallest
+    is kept, against [1, 2.5]. liver_thesis at psi = 20, semi-implicit with time levels, whole
+    run: 3.67 / 4.18 / 2.95 / 3.22 on the four ladders (frames of 20 x 2^(k/4) ms), so out of
+    the band on the cautious side (docs/stability_matrix.md; 3.83 / 2.28 while the interface
+    masses lost part of the ghosts' mass). liver_press, which this check ran before, is now
+    within the band on its own ladder (2.28)."""
     with tempfile.TemporaryDirectory() as work:
         subprocess.run(["/usr/bin/python3", script, "--binary", binary, "--work", work,
-                        "--cases", "liver_press", "--integrators", "semi_implicit", "--psi",
-                        "given", "--time-levels", "on", "--ladder-shifts", "4"],
+                        "--cases", "liver_thesis", "--integrators", "semi_implicit", "--psi",
+                        "20", "--time-levels", "on", "--ladder-shifts", "4"],
                        capture_output=True, text=True, timeout=900)
         path = os.path.join(work, "stability.json")
         rows = json.load(open(path)) if os.path.exists(path) else []
@@ -108,8 +111,10 @@ def check_shifted_ladders(script, binary, quick_rows):
           "ladder k has frames of 20 x 2^(k/4) ms and its automatic run finishes: %s" % shifts)
     check(all(c > 2.5 for c in limits[:-1]) and (limits[-1] <= 2.5 or len(limits) == 4),
           "a ladder is added only while every limit so far is above 2.5: %s" % limits)
-    check(row["limit_factor"] == min(limits) and row["band"] == [1.0, 2.5] and row["ok"],
-          "the smallest limit, within [1, 2.5]: %s %s" % (row["limit_factor"], row["band"]))
+    check(row["limit_factor"] == min(limits) and row["band"] == [1.0, 2.5]
+          and row["ok"] == (1.0 <= min(limits) <= 2.5),
+          "the smallest limit, judged against [1, 2.5]: %s %s %s" % (row["limit_factor"],
+                                                                    row["band"], row["ok"]))
 
 
 def check_refined_step(script, binary):

@@ -1,8 +1,11 @@
 #pragma once
 // The coupled cross-level operator of a hierarchy, probed: every free active DOF displaced
 // alone, the ghosts refreshed, the forces a step computes read back (K_eff, N/m, of the linear
-// Cauchy model). Used by the spectrum and the interface-inertia tests.
+// Cauchy model), and its eigenvalues with the masses the step uses. Used by the spectrum,
+// interface-inertia and mixed-partition tests.
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -46,6 +49,19 @@ inline Eigen::MatrixXd coupled_stiffness(HierarchicalSimulation& sim,
         K(3 * i + k, j) = -sim.state(dofs[i].first).f[dofs[i].second][k] / h;
   }
   return K;
+}
+
+/// The eigenvalues ω² of the current configuration's coupled operator, with the masses the
+/// step uses (M^-1/2 K M^-1/2, K symmetrized), ascending.
+inline Eigen::VectorXd coupled_w2(HierarchicalSimulation& sim) {
+  std::vector<std::pair<int, int>> dofs;
+  Eigen::MatrixXd K = coupled_stiffness(sim, dofs);
+  K = 0.5 * (K + K.transpose());
+  Eigen::VectorXd s(K.rows());
+  for (int i = 0; i < K.rows(); ++i)
+    s[i] = 1.0 / std::sqrt(sim.inertia(dofs[i / 3].first)[dofs[i / 3].second].mass);
+  const Eigen::MatrixXd A = s.asDiagonal() * K * s.asDiagonal();
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(A, Eigen::EigenvaluesOnly).eigenvalues();
 }
 
 }  // namespace mrsim::testing

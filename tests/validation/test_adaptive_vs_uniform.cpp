@@ -179,9 +179,10 @@ TEST(AdaptiveVsUniform, AdaptiveBeamFollowsTheFinestLevelAlone) {
                f_upper = kThreeD * (1 + 0.09 * std::max(1.0, (4 / across) * (4 / across)));
   EXPECT_GE(a.frequency, f_lower);
   // 3 % above L2's own band: with the interface masses (issue 15, docs/hierarchy.md) the
-  // adaptive beam refines less (74 splits instead of 107, at most 284 instead of 369 finest
-  // points) and vibrates 1.5 % above L2 alone instead of 0.45 % below; bringing the adaptive
-  // run onto its finest level is issue 16's work (refinement without the start-up lag).
+  // adaptive beam refines less (69 splits instead of 107, at most 331 instead of 369 finest
+  // points) and vibrates 3.1 % above L2 alone instead of 0.45 % below (1.5 % while b² lost
+  // part of the ghosts' mass, at most 284 finest points: the run takes another path); bringing
+  // the uncalibrated run onto its finest level is issue 16's work.
   EXPECT_LE(a.frequency, 1.03 * f_upper);
 
   char cost[300];
@@ -262,7 +263,7 @@ TEST(AdaptiveVsUniform, PredictionRemovesTheStartUpLag) {
                 "tip at the end of the first frame %.3e / %.3e m (adaptive / L2 alone); over "
                 "1 s: static %+.1f %%, f1 %+.1f %%, largest difference %.2f of the peak, at most "
                 "%zu of %zu finest points active, %d splits, %d merges (without predict: 0.42 of "
-                "L2's tip after the first frame, static -2.3 %%, f1 +1.5 %%, 0.68 of the peak)",
+                "L2's tip after the first frame, static -8.1 %%, f1 +3.1 %%, 0.70 of the peak)",
                 c.adaptive[kChunks - 1], c.uniform[kChunks - 1], 100 * dstatic, 100 * df,
                 worst / peak, c.max_fine_active, c.fine_points, c.splits, c.merges);
   std::printf("predict: %s\n", note);
@@ -284,11 +285,11 @@ TEST(AdaptiveVsUniform, PredictionRemovesTheStartUpLag) {
 
 // Issue 16 point 1: with calibrated coarse levels (object.calibration: orthotropic) the levels
 // that stay coarse bend like the finest one instead of at a sixth of its deflection, so the
-// first frame's lag is small and the adaptive tip follows L2 alone: largest difference 0.34 of
-// the peak (0.68 uncalibrated), static within 1 %. Its f1 is 11 % above L2's: the calibrated
-// coarse levels match L2's f1 alone (hierarchy tests) but the mixed-level beam, which now
-// refines all of L2 at the first swing and coarsens back, vibrates stiffer — the open part
-// (docs/hierarchy.md "Calibrated levels"). Breaking it: without the fit the deviation is 0.68.
+// first frame's lag is small and the adaptive tip follows L2 alone: largest difference 0.24 of
+// the peak (0.70 uncalibrated), static within 1 %, f1 within 0.4 %. The f1 band guards the
+// interface masses: while b² lost part of the ghosts' mass the mixed-level beam, which refines
+// all of L2 at the first swing and coarsens back, vibrated 11 % above L2 (docs/hierarchy.md
+// "Interface mass"). Breaking it: without the fit the deviation is 0.70.
 TEST(AdaptiveVsUniform, CalibratedLevelsBringTheBeamOntoItsFinestLevel) {
   // The fit itself, not a calibration cached by an earlier build (simulation/calibration_cache).
   const std::filesystem::path cache = std::filesystem::path(::testing::TempDir()) /
@@ -307,13 +308,13 @@ TEST(AdaptiveVsUniform, CalibratedLevelsBringTheBeamOntoItsFinestLevel) {
   std::printf("%s\n", note);
   EXPECT_NEAR(g.dstatic, 0, 0.05);
   EXPECT_LE(g.worst / g.peak, 0.45);
-  EXPECT_NEAR(g.df, 0, 0.15);
+  EXPECT_NEAR(g.df, 0, 0.05);
   validation::Check cd = check("adaptive_vs_uniform_calibrated_max_deviation",
                                "Beam, adaptive 3 calibrated levels (object.calibration: "
                                "orthotropic) vs L2 alone: largest tip difference over 1 s",
                                "max |w_adaptive - w_L2| / peak w_L2", g.worst / g.peak, 0, 0.45);
   cd.reference_source = "no analytic reference: both runs start from rest under sudden gravity";
-  cd.tolerance = "issue 16 asks <= 0.2; 0.45 guards the gain over 0.68 uncalibrated (not met)";
+  cd.tolerance = "issue 16 asks <= 0.2; 0.45 guards the gain over 0.70 uncalibrated (not met)";
   cd.note = note;
   validation::record(cd);
   std::filesystem::remove_all(cache);
