@@ -123,7 +123,8 @@ struct Scenario {
   std::filesystem::path source;  // the YAML file it came from
   std::vector<LevelSpec> levels;
   LengthUnit units = LengthUnit::Metre;
-  CalibrationKind calibration = CalibrationKind::None;  // object.calibration (hierarchy/level_calibration.hpp)
+  // object.calibration (hierarchy/level_calibration.hpp); the schema's default
+  CalibrationKind calibration = CalibrationKind::PerTet;
   std::filesystem::path skin;  // absolute; empty: the finest level's boundary
   LengthUnit skin_units = LengthUnit::Metre;  // of the skin file (default: object.units)
   MaterialSpec material;

@@ -182,7 +182,7 @@ def test_calibration_logged(binary, source, tmp):
     check("read from the cache" in run_calibrated(binary, source, damaged, cache),
           "and the rewritten file is read next time")
     _, _, _, plain = run(binary, source, tmp, "beam_adaptive.yaml", "plain",
-                         ["time.duration=0.04"])
+                         ["time.duration=0.04", "object.calibration=none"])
     with h5py.File(os.path.join(plain, "log.h5"), "r") as h5:
         check("calibration_scales" not in h5["/levels/level_0"].attrs,
               "object.calibration: none logs no calibration")
