@@ -80,12 +80,12 @@ def main():
     check(explicit is not None and semi is not None and 2 * semi <= explicit,
           "beam_adaptive: semi_implicit runs at %s substeps, modified_euler needs %s (>= 2x)"
           % (semi, explicit))
-    check_shifted_ladders(script, args.binary, rows)
+    check_shifted_ladders(script, args.binary)
     check_refined_step(script, args.binary)
     return report()
 
 
-def check_shifted_ladders(script, binary, quick_rows):
+def check_shifted_ladders(script, binary):
     """With time levels each particle's step is a power-of-two division of the frame, so one
     ladder measures the limit only within a factor 2 above the true ratio. Ladders are added
     while the smallest limit is above 2.5 (each one is above the true ratio), and the smallest

@@ -10,7 +10,10 @@
 #include <vector>
 
 #include "hierarchy/hierarchy_fixture.hpp"
+#include "hierarchy/level_calibration.hpp"
+#include "scenario/material.hpp"
 #include "simulation/hierarchical_simulation.hpp"
+#include "support/bundled_levels.hpp"
 
 namespace mrsim::testing {
 
@@ -24,6 +27,31 @@ HierarchySetup clamped_setup(const std::vector<TetMesh>& meshes, Coupling coupli
   hs.law.mu = mu;
   hs.coupling = coupling;
   hs.fixed = fixed_where(meshes, fixed);
+  return hs;
+}
+
+/// The linear (Cauchy) law of Young's modulus `young` and Poisson ratio `poisson`.
+inline MaterialLaw cauchy_law(double young, double poisson) {
+  const scenario::LameParameters lame = scenario::lame_from_engineering({young, poisson});
+  MaterialLaw law;
+  law.strain = StrainMeasure::Cauchy;
+  law.lambda = lame.lambda;
+  law.mu = lame.mu;
+  return law;
+}
+
+/// The last `levels` levels of a bundled hierarchy, each with its calibrated law, held where
+/// the bundle holds them.
+inline HierarchySetup calibrated_setup(const test_support::BundledLevels& b,
+                                       const MaterialLaw& law,
+                                       const std::vector<LevelCalibration>& cal,
+                                       Coupling coupling, int levels) {
+  HierarchySetup hs;
+  hs.law = law;
+  hs.coupling = coupling;
+  hs.fixed.assign(b.fixed.end() - levels, b.fixed.end());
+  const int L = static_cast<int>(b.meshes.size());
+  for (int l = L - levels; l < L; ++l) hs.level_laws.push_back(cal[l].applied_to(law));
   return hs;
 }
 

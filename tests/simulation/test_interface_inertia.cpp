@@ -11,7 +11,6 @@
 #include "hierarchy/hierarchy_fixture.hpp"
 #include "hierarchy/level_calibration.hpp"
 #include "mesh/box_mesh.hpp"
-#include "scenario/material.hpp"
 #include "support/bundled_levels.hpp"
 
 using namespace mrsim;
@@ -186,19 +185,10 @@ TEST(InterfaceInertia, AMixedBeamVibratesLikeItsFinestLevel) {
   // 1.9–2.4 % (docs/hierarchy.md "Interface mass").
   const auto b =
       test_support::bundled_levels("beam", 3, [](const Vec3& p) { return p.x() <= 1e-3; });
-  const scenario::LameParameters lame = scenario::lame_from_engineering({1e6, 0.3});
-  MaterialLaw law;
-  law.strain = StrainMeasure::Cauchy;
-  law.lambda = lame.lambda;
-  law.mu = lame.mu;
+  const MaterialLaw law = mrsim::testing::cauchy_law(1e6, 0.3);
   const auto cal = calibrate_levels(b.pointers(), law, b.fixed, CalibrationKind::PerTet);
   auto setup = [&](Coupling c, int levels) {
-    HierarchySetup hs;
-    hs.law = law;
-    hs.coupling = c;
-    hs.fixed.assign(b.fixed.end() - levels, b.fixed.end());
-    for (int l = 3 - levels; l < 3; ++l) hs.level_laws.push_back(cal[l].applied_to(law));
-    return hs;
+    return mrsim::testing::calibrated_setup(b, law, cal, c, levels);
   };
   auto f1 = [](HierarchicalSimulation& sim) {
     return std::sqrt(coupled_w2(sim).minCoeff()) / (2 * M_PI);

@@ -12,9 +12,6 @@
 #include <random>
 
 #include "coupled_operator.hpp"
-#include "hierarchy/level_calibration.hpp"
-#include "scenario/material.hpp"
-#include "support/bundled_levels.hpp"
 
 using namespace mrsim;
 
@@ -40,21 +37,11 @@ void split_where(HierarchicalSimulation& sim, const std::function<bool(const Vec
 // Mean |f / f_finest − 1| over the six lowest modes of six partitions.
 double mean_mode_error(const Body& body) {
   const auto b = test_support::bundled_levels(body.name, body.levels, body.held);
-  const scenario::LameParameters lame =
-      scenario::lame_from_engineering({body.young, body.poisson});
-  MaterialLaw law;
-  law.strain = StrainMeasure::Cauchy;
-  law.lambda = lame.lambda;
-  law.mu = lame.mu;
+  const MaterialLaw law = mrsim::testing::cauchy_law(body.young, body.poisson);
   const auto cal = calibrate_levels(b.pointers(), law, b.fixed, CalibrationKind::PerTet);
   const int L = body.levels;
   auto setup = [&](int levels) {
-    HierarchySetup hs;
-    hs.law = law;
-    hs.coupling = Coupling::Energy;
-    hs.fixed.assign(b.fixed.end() - levels, b.fixed.end());
-    for (int l = L - levels; l < L; ++l) hs.level_laws.push_back(cal[l].applied_to(law));
-    return hs;
+    return mrsim::testing::calibrated_setup(b, law, cal, Coupling::Energy, levels);
   };
   HierarchicalSimulation alone({&b.meshes[L - 1]}, setup(1));
   const Eigen::VectorXd finest = mrsim::testing::coupled_w2(alone).head(6).cwiseSqrt();
