@@ -23,6 +23,7 @@ struct LevelCheckpoint {
   std::vector<std::uint8_t> subdivided, support;  // hierarchy flags (method.md §4.2)
   std::vector<std::int32_t> active_ref, ghost_ref;
   std::vector<std::int32_t> split_frame;              // space adaptivity: frame of the last split
+  std::vector<std::int32_t> calm_streak;              // and calm frame ends in a row (merges)
   std::vector<std::int8_t> time_level, stable_level;  // per-particle time levels (else empty)
 };
 
@@ -58,7 +59,7 @@ struct RunCheckpoint {
 };
 
 struct Checkpoint {
-  static constexpr std::int64_t kFormatVersion = 2;  // 2: the log embedded (/log_h5)
+  static constexpr std::int64_t kFormatVersion = 3;  // 2: /log_h5; 3: calm_streak
   std::string mrsim_version, git_revision;
   std::string scenario_yaml;    // the resolved scenario the run was started with
   std::string scenario_source;  // absolute path of its file: relative mesh paths start there

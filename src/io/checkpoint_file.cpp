@@ -145,6 +145,7 @@ void write_level(hid_t parent, int l, const LevelCheckpoint& c, const std::strin
   g.values<std::int32_t>("active_ref", c.active_ref);
   g.values<std::int32_t>("ghost_ref", c.ghost_ref);
   g.values<std::int32_t>("split_frame", c.split_frame);
+  g.values<std::int32_t>("calm_streak", c.calm_streak);
   g.values<std::int8_t>("time_level", c.time_level);
   g.values<std::int8_t>("stable_level", c.stable_level);
   g.close();
@@ -165,6 +166,7 @@ LevelCheckpoint read_level(hid_t parent, int l, const std::string& file) {
   c.active_ref = g.values<std::int32_t>("active_ref", n);
   c.ghost_ref = g.values<std::int32_t>("ghost_ref", n);
   c.split_frame = g.values<std::int32_t>("split_frame", n);
+  c.calm_streak = g.values<std::int32_t>("calm_streak", n);
   const bool time_levels = g.length("time_level") > 0;
   c.time_level = g.values<std::int8_t>("time_level", time_levels ? n : 0);
   c.stable_level = g.values<std::int8_t>("stable_level", time_levels ? n : 0);

@@ -99,6 +99,7 @@ struct SpaceAdaptivitySpec {
   int max_level = -1;                 // -1: the last level
   std::int64_t max_active_points = 0;  // 0: no cap
   int min_dwell_frames = 5;
+  int calm_frames = 1;         // successive calm frame ends before a merge (1: the thesis)
   bool contact_refine = true;  // refine ahead of the tools (look-ahead), not only on c
   bool predict = false;        // c also on u + ½ T² (g + f_ext/m), T = frame_dt (no lag)
   int split_checks = 1;        // splits decided this many times a frame (merges at its end)

@@ -84,6 +84,7 @@ SpaceAdaptivitySpec space_spec(const json& a) {
   spec.max_level = a.contains("max_level") ? a["max_level"].get<int>() : -1;
   spec.max_active_points = a["max_active_points"].get<std::int64_t>();
   spec.min_dwell_frames = a["min_dwell_frames"].get<int>();
+  spec.calm_frames = a["calm_frames"].get<int>();
   spec.contact_refine = a["contact_refine"].get<bool>();
   spec.predict = a["predict"].get<bool>();
   spec.split_checks = a["split_checks"].get<int>();

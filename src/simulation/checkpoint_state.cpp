@@ -127,16 +127,22 @@ void HierarchicalSimulation::restore(const SimulationCheckpoint& c) {
 SimulationCheckpoint take_checkpoint(const HierarchicalSimulation& sim,
                                      const SpaceAdaptivity& adapt) {
   SimulationCheckpoint c = sim.checkpoint();
-  for (int l = 0; l < sim.num_levels(); ++l) c.levels[l].split_frame = adapt.split_frames()[l];
+  for (int l = 0; l < sim.num_levels(); ++l) {
+    c.levels[l].split_frame = adapt.split_frames()[l];
+    c.levels[l].calm_streak = adapt.calm_streaks()[l];
+  }
   return c;
 }
 
 void restore_checkpoint(const SimulationCheckpoint& checkpoint, HierarchicalSimulation& sim,
                         SpaceAdaptivity& adapt) {
   sim.restore(checkpoint);
-  std::vector<std::vector<int>> split_frames;
-  for (const LevelCheckpoint& level : checkpoint.levels) split_frames.push_back(level.split_frame);
-  adapt.restore(std::move(split_frames));
+  std::vector<std::vector<int>> split_frames, calm_streaks;
+  for (const LevelCheckpoint& level : checkpoint.levels) {
+    split_frames.push_back(level.split_frame);
+    calm_streaks.push_back(level.calm_streak);
+  }
+  adapt.restore(std::move(split_frames), std::move(calm_streaks));
 }
 
 }  // namespace mrsim

@@ -132,6 +132,7 @@ SpaceAdaptivitySettings space_settings(const Scenario& sc) {
   if (sc.space.max_level >= 0) s.max_level = sc.space.max_level;
   s.max_active_points = sc.space.max_active_points;
   s.min_dwell_frames = sc.space.min_dwell_frames;
+  s.calm_frames = sc.space.calm_frames;
   // One level finer per frame: look as many frames ahead as there are levels to go through.
   if (!sc.tools.empty() && sc.space.contact_refine)
     s.contact_lookahead = sc.time.frame_dt * static_cast<double>(sc.levels.size());

@@ -32,11 +32,13 @@ SpaceAdaptivity::SpaceAdaptivity(const SpaceAdaptivitySettings& settings,
     : s_(settings),
       criterion_(sim.num_levels()),
       split_frame_(sim.num_levels()),
+      calm_streak_(sim.num_levels()),
       contact_(sim.num_levels()) {
   s_.max_level = std::min(s_.max_level, sim.num_levels() - 1);
   for (int l = 0; l < sim.num_levels(); ++l) {
     criterion_[l].assign(sim.model(l).num_points(), 0.0);
     split_frame_[l].assign(sim.model(l).num_points(), -1);
+    calm_streak_[l].assign(sim.model(l).num_points(), 0);
     contact_[l].assign(sim.model(l).num_points(), 0);
   }
   if (s_.predict_horizon > 0) {
@@ -49,12 +51,16 @@ SpaceAdaptivity::SpaceAdaptivity(const SpaceAdaptivitySettings& settings,
   }
 }
 
-void SpaceAdaptivity::restore(std::vector<std::vector<int>> split_frames) {
-  bool fits = split_frames.size() == split_frame_.size();
+void SpaceAdaptivity::restore(std::vector<std::vector<int>> split_frames,
+                              std::vector<std::vector<int>> calm_streaks) {
+  bool fits = split_frames.size() == split_frame_.size() &&
+              calm_streaks.size() == calm_streak_.size();
   for (size_t l = 0; fits && l < split_frames.size(); ++l)
-    fits = split_frames[l].size() == split_frame_[l].size();
+    fits = split_frames[l].size() == split_frame_[l].size() &&
+           calm_streaks[l].size() == calm_streak_[l].size();
   if (!fits) throw std::invalid_argument("SpaceAdaptivity::restore: another hierarchy's frames");
   split_frame_ = std::move(split_frames);
+  calm_streak_ = std::move(calm_streaks);
 }
 
 void SpaceAdaptivity::mark_contact_region(const HierarchicalSimulation& sim) {
@@ -160,23 +166,42 @@ bool SpaceAdaptivity::split_within_cap(HierarchicalSimulation& sim, int l, int p
   sim.split(l, p);
   active += added;
   split_frame_[l][p] = frame;
+  calm_streak_[l][p] = 0;
   events.push_back({frame, "split", l, p});
   return true;
 }
 
-// A subdivided point merges when its children are calm (criterion below coarsen_below) after
-// its dwell time, unless more than half of its neighbours stay subdivided (the island rule,
-// seen from the other side): neighbours that merge in the same pass do not count, so a calm
-// refined region merges whole instead of being held by its own interior.
+// At a frame end: one more calm frame for every subdivided point whose children are all calm
+// now, none for the others (a single swing above coarsen_below starts the count again). A child
+// that is itself subdivided has no criterion of its own: it is calm when its children are, so
+// the finest level is counted first. With calm_frames 1 this is the frame-end rule exactly (a
+// point above a subdivided child cannot merge before that child does).
+void SpaceAdaptivity::count_calm(const HierarchicalSimulation& sim) {
+  for (int l = sim.num_levels() - 2; l >= 0; --l)
+    for (int p : sim.lists().ghost_sub(l)) {
+      bool calm = true;
+      for (int c : sim.hierarchy().links(l).children.row(p))
+        calm = calm && (sim.hierarchy().subdivided(l + 1, c) ? calm_streak_[l + 1][c] > 0
+                                                            : criterion_[l + 1][c] < s_.coarsen_below);
+      calm_streak_[l][p] = calm ? calm_streak_[l][p] + 1 : 0;
+    }
+}
+
+// A subdivided point merges when its children have been calm (criterion below coarsen_below)
+// at the last calm_frames frame ends, after its dwell time, unless more than half of its
+// neighbours stay subdivided (the island rule, seen from the other side): neighbours that merge
+// in the same pass do not count, so a calm refined region merges whole instead of being held by
+// its own interior.
 void SpaceAdaptivity::merge_calm(HierarchicalSimulation& sim, int frame,
                                  std::vector<HierarchyEvent>& events) {
+  count_calm(sim);
   std::vector<int> calm;
   for (int l = sim.num_levels() - 2; l >= 0; --l) {  // leaves first
     calm.clear();
     for (int p : sim.lists().ghost_sub(l)) {  // sorted: so is `calm`
       if (split_frame_[l][p] >= 0 && frame - split_frame_[l][p] < s_.min_dwell_frames) continue;
       if (!sim.hierarchy().can_merge(l, p) || holds_contact(sim, l, p)) continue;
-      if (worst_child(sim, l, p) < s_.coarsen_below) calm.push_back(p);
+      if (calm_streak_[l][p] >= s_.calm_frames) calm.push_back(p);
     }
     auto staying = [&](int q) {
       return sim.hierarchy().subdivided(l, q) && !std::binary_search(calm.begin(), calm.end(), q);

@@ -4,6 +4,10 @@
 // `max_level` and an optional cap on active points; merges of subdivided points whose active
 // children are all below `coarsen_below` (hysteresis: coarsen_below < refine_above / r) after
 // at least `min_dwell_frames` frames, finest first; then garbage collection of ghosts (§4.7).
+// [Eng] With `calm_frames` n > 1 the children must have been below `coarsen_below` at the last
+// n frame ends in a row: a body that swings passes near its rest shape every half period, where
+// Δu is small everywhere, and one calm sample there merged the swinging beam mid-swing
+// (docs/hierarchy.md "Calm over a swing").
 // [Eng] Under the tools the finest level is made active before contact (contact_lookahead):
 // a skin vertex moved by a coarse level while a tool presses it jumps when a finer level takes
 // over (the coarse level cannot represent the dent), and so would the tool force.
@@ -26,6 +30,7 @@ struct SpaceAdaptivitySettings {
   int max_level = 1 << 30;           // clamped to the last level
   std::int64_t max_active_points = 0;  // 0: no cap
   int min_dwell_frames = 5;
+  int calm_frames = 1;  // successive calm frame ends before a merge (1: the thesis' rule)
   // Contact refines ahead of the tools (method.md §6.2 [Eng]): the active points that move a
   // skin vertex a tool may reach within this many seconds split whatever their criterion, and
   // their parents do not merge. 0: off (no tool).
@@ -67,11 +72,14 @@ class SpaceAdaptivity {
                           std::vector<HierarchyEvent>& events);
   /// c_i of the last update, per level (0 where the point is not active).
   const std::vector<double>& criterion(int level) const { return criterion_[level]; }
-  /// Frame of the last split of every point (-1: never), per level: what a checkpoint keeps
-  /// (the criterion and the contact region are recomputed at every update).
+  /// Frame of the last split of every point (-1: never), per level, and how many frame ends in
+  /// a row each subdivided point's children have been calm: what a checkpoint keeps (the
+  /// criterion and the contact region are recomputed at every update).
   const std::vector<std::vector<int>>& split_frames() const { return split_frame_; }
+  const std::vector<std::vector<int>>& calm_streaks() const { return calm_streak_; }
   /// Takes them back; throws std::invalid_argument when the sizes do not match the levels.
-  void restore(std::vector<std::vector<int>> split_frames);
+  void restore(std::vector<std::vector<int>> split_frames,
+               std::vector<std::vector<int>> calm_streaks);
   /// Evaluates the criterion only (for output when adaptivity is off).
   void evaluate(const HierarchicalSimulation& sim);
 
@@ -92,6 +100,8 @@ class SpaceAdaptivity {
   std::vector<std::vector<Vec3>> predicted_, scratch_;
   void add_predicted(const HierarchicalSimulation& sim);
   std::vector<std::vector<int>> split_frame_;  // frame of the last split of each point
+  std::vector<std::vector<int>> calm_streak_;  // frame ends in a row its children were calm
+  void count_calm(const HierarchicalSimulation& sim);
   std::vector<std::vector<std::uint8_t>> contact_;  // 1: moves a skin vertex a tool may reach
   std::vector<std::pair<int, int>> region_;          // (level, point) with contact_ set
   void mark_contact_region(const HierarchicalSimulation& sim);

@@ -29,6 +29,7 @@ LevelCheckpoint sample_level(int n, int salt, bool time_levels) {
     c.active_ref.push_back(i * 3 + salt);
     c.ghost_ref.push_back(1 << 30);
     c.split_frame.push_back(i - 1);
+    c.calm_streak.push_back(3 * i);
     if (time_levels) {
       c.time_level.push_back(static_cast<std::int8_t>(i % 5 - 1));
       c.stable_level.push_back(static_cast<std::int8_t>(i % 3));
@@ -128,6 +129,7 @@ void expect_equal(const Checkpoint& a, const Checkpoint& b) {
     EXPECT_EQ(x.active_ref, y.active_ref);
     EXPECT_EQ(x.ghost_ref, y.ghost_ref);
     EXPECT_EQ(x.split_frame, y.split_frame);
+    EXPECT_EQ(x.calm_streak, y.calm_streak);
     EXPECT_EQ(x.time_level, y.time_level);
     EXPECT_EQ(x.stable_level, y.stable_level);
   }

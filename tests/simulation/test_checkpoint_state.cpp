@@ -58,8 +58,9 @@ SpaceAdaptivitySettings adaptive() {
   SpaceAdaptivitySettings s;
   s.enabled = true;
   s.refine_above = 2e-4;
-  s.coarsen_below = 5e-5;
+  s.coarsen_below = 1.9e-4;
   s.min_dwell_frames = 2;
+  s.calm_frames = 3;  // the calm streaks are part of the state
   return s;
 }
 
@@ -88,18 +89,34 @@ TEST_P(CheckpointState, ARestoredSimulationGoesOnBitForBit) {
   HierarchicalSimulation original(levels, sagging(meshes, c));
   SpaceAdaptivity original_adapt(adaptive(), original);
   std::int64_t splits_before = 0, splits_after = 0, ignored = 0;
-  advance(original, original_adapt, 0, 4, splits_before);
-  const SimulationCheckpoint checkpoint = take_checkpoint(original, original_adapt);
-  advance(original, original_adapt, 4, 8, splits_after);
+  // The checkpoint is taken at the first frame end with a refined hierarchy and a calm streak
+  // under way (merges pending on calm_frames), so both must come back.
+  auto streak_under_way = [&] {
+    for (const auto& level : original_adapt.calm_streaks())
+      for (int n : level)
+        if (n > 0) return true;
+    return false;
+  };
+  int at = 0;
+  while (at < 16 && !(splits_before > 0 && streak_under_way())) {
+    advance(original, original_adapt, at, at + 1, splits_before);
+    ++at;
+  }
   ASSERT_GT(splits_before, 0) << "the checkpoint must hold a refined hierarchy";
+  ASSERT_TRUE(streak_under_way()) << "the checkpoint must hold a calm streak under way";
+  const SimulationCheckpoint checkpoint = take_checkpoint(original, original_adapt);
+  advance(original, original_adapt, at, at + 4, splits_after);
 
   HierarchicalSimulation resumed(levels, sagging(meshes, c));
   SpaceAdaptivity resumed_adapt(adaptive(), resumed);
   restore_checkpoint(checkpoint, resumed, resumed_adapt);
-  advance(resumed, resumed_adapt, 4, 8, ignored);
+  for (int l = 0; l < 3; ++l)
+    EXPECT_EQ(resumed_adapt.calm_streaks()[l], checkpoint.levels[l].calm_streak) << "level " << l;
+  advance(resumed, resumed_adapt, at, at + 4, ignored);
 
   EXPECT_EQ(original.time(), resumed.time());
   EXPECT_EQ(original.steps(), resumed.steps());
+  EXPECT_EQ(original_adapt.calm_streaks(), resumed_adapt.calm_streaks());
   for (int l = 0; l < 3; ++l) {
     EXPECT_EQ(original.lists().active(l), resumed.lists().active(l)) << "level " << l;
     EXPECT_EQ(original.force_evaluations(l), resumed.force_evaluations(l)) << "level " << l;

@@ -75,6 +75,51 @@ TEST(SpaceAdaptivity, ADentRefinesUnderItAndCoarsensBackWhenReleased) {
   EXPECT_EQ(sim.lists().total(StatusLists::kGhostIface) + sim.lists().total(StatusLists::kGhostSub), 0u);
 }
 
+// adaptivity.space.calm_frames: a dent that swings through the rest shape (a frame end now and
+// then catches it flat) merges at the first flat frame end with the thesis' rule, but stays
+// refined with calm_frames 3 until it has been flat at three frame ends in a row; a dented frame
+// end within the streak starts the count again. Breaking it: counting calm frames without the
+// reset, or merging on one calm sample whatever calm_frames says, fails the "still refined"
+// checks.
+TEST(SpaceAdaptivity, ASwingingDentMergesOnlyAfterCalmFramesInARow) {
+  const auto meshes = three_boxes();
+  auto refined = [](const HierarchicalSimulation& sim) {
+    return sim.lists().ghost_sub(0).size() + sim.lists().ghost_sub(1).size();
+  };
+  // Depth per frame end: dented, then through the rest shape every other frame, then flat.
+  const std::vector<double> depth = {2e-3, 2e-3, 2e-3, 0, 2e-3, 0, 0, 2e-3, 0, 0, 0, 0};
+  std::vector<std::size_t> with_rule[2];
+  for (int k = 0; k < 2; ++k) {
+    HierarchicalSimulation sim({&meshes[0], &meshes[1], &meshes[2]}, soft_material());
+    SpaceAdaptivitySettings s = refine_at(0.02);
+    s.coarsen_below = 0.005;
+    s.min_dwell_frames = 1;
+    s.calm_frames = k == 0 ? 1 : 3;
+    SpaceAdaptivity adapt(s, sim);
+    std::vector<HierarchyEvent> events;
+    for (int frame = 0; frame < static_cast<int>(depth.size()); ++frame) {
+      impose(sim, depth[frame]);
+      adapt.update(sim, frame, events);
+      ASSERT_TRUE(sim.hierarchy().check_invariants().empty());
+      with_rule[k].push_back(refined(sim));
+    }
+  }
+  const auto& one = with_rule[0];
+  const auto& three = with_rule[1];
+  // Subdivided points per frame end (measured): 13 48 47 0 13 0 0 13 0 0 0 0 with the thesis'
+  // rule, 13 48 48 48 47 47 47 48 48 48 0 0 with calm_frames 3 (one point at the dent's rim,
+  // calm even when dented, merges at frame 4 after three calm frame ends).
+  ASSERT_GT(one[2], 10u);
+  EXPECT_EQ(one[3], 0u);  // the thesis' rule: the first flat frame end merges everything
+  EXPECT_EQ(one[5], 0u);
+  // calm_frames 3: flat at frames 3, 5-6 and 8-10; only the third flat frame end in a row
+  // (frame 10) lets the dent's refinement go.
+  for (int frame = 3; frame <= 9; ++frame)
+    EXPECT_GE(10 * three[frame], 9 * three[2]) << "frame " << frame;
+  EXPECT_EQ(three[10], 0u);
+  EXPECT_EQ(three.back(), 0u);
+}
+
 TEST(SpaceAdaptivity, ActivePointCapIsRespected) {
   const auto meshes = three_boxes();
   HierarchicalSimulation sim({&meshes[0], &meshes[1], &meshes[2]}, soft_material());

@@ -150,15 +150,18 @@ constexpr double kThreeD = 10.001;  // Hz, validation.md §2.2/§2.3 (C3D10 h = 
 // +9 % in f1 and -20 % in deflection ("at 4 across"). Adaptivity is acceptable when it adds
 // less than the finest level's own discretisation error, so the adaptive-minus-uniform
 // differences are held to those bands, and the adaptive f1 to L2's own §2.3 band. The time
-// curves cannot be held much tighter than a peak: the criterion is zero at rest, so the first
-// frame (0.02 s, L0's half period) runs on L0 alone, and the splits and merges that follow
-// leave the refined beam oscillating with another amplitude and phase (see the note). With the
+// curve is held to issue 16's 0.2 of the peak: the criterion is zero at rest, so the first
+// frame (0.02 s, L0's half period) runs on L0 alone, and every split and merge that follows
+// leaves the refined beam oscillating with another amplitude and phase (see the note). With the
 // default per-tet levels L0 alone bends like L2 (tip 0.97); uncalibrated it deflected to 1/6
-// of L2's, and the largest difference was 0.70 of the peak against 0.22 now.
+// of L2's (largest difference 0.70 of the peak). The bundled scenario merges a region only
+// after five calm frame ends in a row (calm_frames, about one swing): 0.13 of the peak, against
+// 0.22 with the thesis' single calm sample, which merged the beam as it swung through its rest
+// shape (docs/hierarchy.md "Calm over a swing").
 // Breaking it: a coupling that stiffens or softens the mixed-level beam by 10 % (wrong ghost
 // weights, masses lost at interfaces) moves f1 by 5 % and the deflection by 10 %, outside once
-// doubled; everything refined all the time (no saving) fails the active-point check; a
-// divergence fails all.
+// doubled; merges on one calm sample again fail the largest difference; a divergence fails
+// all.
 TEST(AdaptiveVsUniform, AdaptiveBeamFollowsTheFinestLevelAlone) {
   const Scenario sc = beam_adaptive({});
   const Curves c = run_both(sc);
@@ -177,10 +180,12 @@ TEST(AdaptiveVsUniform, AdaptiveBeamFollowsTheFinestLevelAlone) {
   ASSERT_GE(u.periods, 8);
   EXPECT_NEAR(df, 0, 0.09);
   EXPECT_NEAR(dstatic, 0, 0.20);
-  EXPECT_LE(worst / peak, 0.3);  // 0.22 with per-tet levels (issue 16 asks 0.2), 0.70 without
-  // Not everything refined all the time: with per-tet levels the whole beam is on L2 at times
-  // (at most 522 of 522), 0.77 of its points on average (the uncalibrated levels: at most 331).
-  EXPECT_LT(c.mean_fine_active, 0.9);
+  EXPECT_LE(worst / peak, 0.2);  // 0.13 (issue 16 asks 0.2); 0.22 on one calm sample
+  // The run starts on level 0 alone and the finest level takes over as the beam bends: the
+  // whole beam is on L2 at times (522 of 522) and 0.96 of its points on average. The beam
+  // bends everywhere and swings for the whole second, so it saves little (docs/hierarchy.md).
+  EXPECT_LT(c.mean_fine_active, 0.99);
+  EXPECT_GT(c.merges, 0);
   // L2's band of test_beam_levels_frequency.cpp: elements across by tet count against the
   // gmsh h = 5 mm row (1787 tets), +9 % scaled by (4 / across)².
   const double across = kBeamH / (5e-3 * std::cbrt(1787.0 / static_cast<double>(c.fine_tets)));
@@ -224,17 +229,16 @@ TEST(AdaptiveVsUniform, AdaptiveBeamFollowsTheFinestLevelAlone) {
   validation::Check cd = check("adaptive_vs_uniform_max_deviation",
                                "Beam, adaptive 3 levels vs L2 alone: largest tip difference "
                                "over 1 s",
-                               "max |w_adaptive - w_L2| / peak w_L2", worst / peak, 0, 0.3);
+                               "max |w_adaptive - w_L2| / peak w_L2", worst / peak, 0, 0.2);
   cd.reference_source = "no analytic reference: both runs start from rest under sudden gravity";
-  cd.tolerance =
-      "issue 16 asks <= 0.2; 0.3 guards the per-tet levels' gain over 0.70 uncalibrated";
+  cd.tolerance = "issue 16: <= 0.2 of the peak";
   const size_t first_frame = kChunks - 1;
   char lag[400];
   std::snprintf(lag, sizeof lag,
                 "The criterion is zero at rest, so the first frame (%.2f s, about L0's half "
                 "period) runs on L0 alone: tip %.2e m at its end against %.2e m for L2 alone. "
-                "The refined beam then oscillates about L2's static deflection with another "
-                "amplitude and phase. Static value and f1 agree; the transient does not.",
+                "The refined beam then oscillates about L2's static deflection; every split "
+                "and merge moves its amplitude and phase a little.",
                 sc.time.frame_dt, c.adaptive[first_frame], c.uniform[first_frame]);
   cd.note = lag;
   validation::record(cd);
@@ -256,6 +260,26 @@ TEST(AdaptiveVsUniform, AdaptiveBeamFollowsTheFinestLevelAlone) {
   validation::record(ch);
 }
 
+// The thesis' merge rule (calm_frames 1: children calm at one frame end) on the same run: the
+// beam swings through its rest shape, where the criterion is small everywhere, and a frame end
+// that catches it there merges it mid-swing (0.77 of the finest points active on average
+// against 0.96, 162 merges against 90). It saves more and follows L2 less closely: largest
+// difference 0.22 of the peak, f1 +0.6 %. Held to the bands this test had before calm_frames
+// existed; breaking it: a merge rule that ignores calm_frames = 1 (merging nothing, or
+// everything) fails the active-point or the deviation check.
+TEST(AdaptiveVsUniform, OneCalmSampleMergesTheSwingingBeam) {
+  const Curves c = run_both(beam_adaptive({"adaptivity.space.calm_frames=1"}));
+  const Agreement g = agreement(c);
+  std::printf("calm_frames 1: static %+.2f %%, f1 %+.2f %%, largest difference %.3f of the peak, "
+              "finest points active on average %.2f, %d splits, %d merges\n",
+              100 * g.dstatic, 100 * g.df, g.worst / g.peak, c.mean_fine_active, c.splits,
+              c.merges);
+  EXPECT_NEAR(g.df, 0, 0.09);
+  EXPECT_NEAR(g.dstatic, 0, 0.20);
+  EXPECT_LE(g.worst / g.peak, 0.3);
+  EXPECT_LT(c.mean_fine_active, 0.9);
+}
+
 // Issue 16 point 2: with adaptivity.space.predict the criterion also sees the displacement the
 // loads alone would add within a frame (u + T²/2 g here) and a first decision is made at t = 0,
 // so sudden gravity refines the beam where it is about to bend before the first frame runs: at
@@ -273,7 +297,7 @@ TEST(AdaptiveVsUniform, PredictionRemovesTheStartUpLag) {
                 "tip at the end of the first frame %.3e / %.3e m (adaptive / L2 alone); over "
                 "1 s: static %+.1f %%, f1 %+.1f %%, largest difference %.2f of the peak, at most "
                 "%zu of %zu finest points active, %d splits, %d merges (without predict: 0.91 of "
-                "L2's tip after the first frame, static -1.5 %%, f1 +0.6 %%, 0.22 of the peak)",
+                "L2's tip after the first frame, static +0.2 %%, f1 -0.1 %%, 0.13 of the peak)",
                 c.adaptive[kChunks - 1], c.uniform[kChunks - 1], 100 * dstatic, 100 * df,
                 worst / peak, c.max_fine_active, c.fine_points, c.splits, c.merges);
   std::printf("predict: %s\n", note);
@@ -306,7 +330,10 @@ TEST(AdaptiveVsUniform, CalibratedLevelsBringTheBeamOntoItsFinestLevel) {
                                       ("mrsim_calibration_" + std::to_string(::getpid()));
   std::filesystem::remove_all(cache);
   ::setenv("MRSIM_CACHE_DIR", cache.c_str(), 1);
-  const Scenario sc = beam_adaptive({"object.calibration=orthotropic"});
+  // The thesis' merge rule, on which this fit's gain was measured (with calm_frames 5 the
+  // orthotropic beam ends on partitions 10 % stiff in f1: docs/hierarchy.md).
+  const Scenario sc =
+      beam_adaptive({"object.calibration=orthotropic", "adaptivity.space.calm_frames=1"});
   const Curves c = run_both(sc);
   const Agreement g = agreement(c);
   char note[300];
