@@ -11,7 +11,10 @@ the load is, and one pair of criterion thresholds serves both bundled liver hier
   the uniform run's peak at every frame, with at most 12 % of its tet updates.
 - liver_probe (4 levels, 14 260 finest tets) and liver_thesis (3 levels, the thesis' sizes) use
   the same refine_above and coarsen_below; with them each refines a patch under the probe,
-  never its whole finest level, and is back on level 0 after the probe leaves."""
+  never its whole finest level, and is back on level 0 after the probe leaves.
+
+The first two also leave validation records (tests/python/validation_record.py): their rows and
+curves are in docs/validation.md, "Adaptive vs uniform"."""
 import glob
 import json
 import os
@@ -24,6 +27,7 @@ import yaml
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import test_cli_run as cli  # noqa: E402  (shared helpers: run, check, parse_args, report)
+import validation_record  # noqa: E402
 from test_tool_scenarios import blocks  # noqa: E402  (a frame's blocks by name)
 
 check = cli.check
@@ -36,9 +40,12 @@ def run(binary, scenario, out, sets, frames=False):
     r = cli.run(binary, *args)
     check(r.returncode == 0, "%s runs (exit %d) %s" % (out, r.returncode, r.stderr[-300:]))
     with h5py.File(os.path.join(out, "log.h5"), "r") as h5:
-        return (h5["/tool/force"][:] if "tool" in h5 else None,
-                int(h5["/frames/tet_updates"][-1].sum()),
-                h5["/frames/active"][:])
+        tool = (h5["/tool/time"][:], h5["/tool/force"][:]) if "tool" in h5 else (None, None)
+        return tool, int(h5["/frames/tet_updates"][-1].sum()), h5["/frames/active"][:]
+
+
+GROUP = "Adaptive vs uniform"
+SOURCE = "no analytic reference: the same run on the finest level alone (same steps)"
 
 
 def test_probe_follows_finest(binary, source, tmp):
@@ -46,12 +53,12 @@ def test_probe_follows_finest(binary, source, tmp):
     with open(scenario) as f:
         finest = yaml.safe_load(f)["object"]["levels"][-1]
     adaptive_out = os.path.join(tmp, "probe_adaptive")
-    fa, ta, _ = run(binary, scenario, adaptive_out, [])  # the bundled 1.4 s, as issue 17
+    (t, fa), ta, _ = run(binary, scenario, adaptive_out, [])  # the bundled 1.4 s, as issue 17
     with open(os.path.join(adaptive_out, "scenario.yaml")) as f:
         substeps = yaml.safe_load(f)["time"]["substeps"]
-    fu, tu, _ = run(binary, scenario, os.path.join(tmp, "probe_finest"),
-                    ["object.levels=" + json.dumps([finest]),
-                     "time.substeps=%d" % substeps])
+    (_, fu), tu, _ = run(binary, scenario, os.path.join(tmp, "probe_finest"),
+                         ["object.levels=" + json.dumps([finest]),
+                          "time.substeps=%d" % substeps])
     check(fa.shape == fu.shape, "the adaptive and uniform runs log the same steps (%s, %s)"
           % (fa.shape, fu.shape))
     if fa.shape != fu.shape:
@@ -63,6 +70,24 @@ def test_probe_follows_finest(binary, source, tmp):
           "every one of %d steps (<= 5 %%)" % (100 * worst, nu.max(), len(nu)))
     check(ta <= 0.07 * tu,
           "liver_probe adaptive makes %.3f of liver_L3 alone's tet updates (<= 0.07)" % (ta / tu))
+    note = ("peak %.4f N adaptive, %.4f N on liver_L3 alone (%+.2f %%), %d tool samples; the "
+            "adaptive run makes %.3f of liver_L3 alone's tet updates (%d against %d)"
+            % (na.max(), nu.max(), 100 * (na.max() / nu.max() - 1), len(nu), ta / tu, ta, tu))
+    validation_record.record(
+        "liver_probe_tool_force", GROUP,
+        "liver_probe, adaptive 4 levels vs liver_L3 alone: tool force, largest difference at "
+        "any step over 1.4 s", "max | |F|_adaptive - |F|_L3 | / peak |F|_L3", worst, 0, 0.05,
+        tolerance="issue 16: within 5 % of the finest level's peak at every step",
+        reference_source=SOURCE, note=note,
+        series=("t (s)", "tool force |F| (N)", ["t", "adaptive (liver_probe.yaml)", "L3 alone"],
+                zip(t, na, nu)))
+    validation_record.record(
+        "liver_probe_tet_updates", GROUP,
+        "liver_probe, adaptive 4 levels vs liver_L3 alone: tet updates over 1.4 s",
+        "tet updates adaptive / L3 alone", ta / tu, 0, 0.07,
+        tolerance="issue 17's tenth of the finest level's CPU, as the work counted (the CPU "
+        "is measured by bench/adaptive_vs_uniform.py, never in a test)",
+        reference_source=SOURCE, note=note)
 
 
 def patch_displacement(out, box):
@@ -103,6 +128,29 @@ def test_press_follows_finest(binary, source, tmp):
           "(%.3f mm) at every one of %d frames (<= 5 %%)" % (100 * worst, 1e3 * peak, n))
     check(ta <= 0.12 * tu,
           "liver_press adaptive makes %.3f of liver_L3 alone's tet updates (<= 0.12)" % (ta / tu))
+    with h5py.File(os.path.join(adaptive_out, "log.h5"), "r") as h5:
+        times = h5["/frames/time"][:]  # one row per written frame, as the frames
+    note = ("peak %.4f mm adaptive, %.4f mm on liver_L3 alone (%+.2f %%), %d frames; the "
+            "adaptive run makes %.3f of liver_L3 alone's tet updates (%d against %d)"
+            % (-1e3 * a[:n].min(), -1e3 * u[:n].min(), 100 * (a[:n].min() / u[:n].min() - 1), n,
+               ta / tu, ta, tu))
+    validation_record.record(
+        "liver_press_patch", GROUP,
+        "liver_press, adaptive 4 levels (refining ahead of its load) vs liver_L3 alone: the "
+        "loaded patch, largest difference at any frame over 2 s",
+        "max |uz_adaptive - uz_L3| / peak |uz_L3| (mean uz of L3's points under the patch)",
+        worst, 0, 0.05, tolerance="issue 16: within 5 % of the finest level's peak at every "
+        "frame", reference_source=SOURCE, note=note,
+        series=("t (s)", "mean uz under the loaded patch (mm)",
+                ["t", "adaptive (liver_press.yaml)", "L3 alone"],
+                [(times[k], 1e3 * a[k], 1e3 * u[k]) for k in range(min(n, len(times)))]))
+    validation_record.record(
+        "liver_press_tet_updates", GROUP,
+        "liver_press, adaptive 4 levels vs liver_L3 alone: tet updates over 2 s",
+        "tet updates adaptive / L3 alone", ta / tu, 0, 0.12,
+        tolerance="issue 16's 0.15 of the finest level's CPU, as the work counted (the CPU is "
+        "measured by bench/adaptive_vs_uniform.py, never in a test)",
+        reference_source=SOURCE, note=note)
 
 
 def test_one_pair_of_thresholds(binary, source, tmp):
