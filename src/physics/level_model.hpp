@@ -94,8 +94,8 @@ inline bool is_held(const LevelModel& m, int i) { return !m.held.empty() && m.he
 /// is kept and only the damping is scaled to the level's combined limit
 /// (time_level_damping_scale): where damping sets the step, the damping and stiffness modes
 /// apart were 1.6–4.6 times too cautious on the liver.
-/// `growth`: the level's tangent growth g now (physics/tangent_growth.hpp; 0, what the set-up
-/// assumes, gives filter_spectrum itself). Semi-implicit, the filtered scale follows it
+/// `growth`: the point's tangent growth g now, the largest among its tets (physics/
+/// tangent_growth.hpp; 0, what the set-up assumes, gives filter_spectrum itself). Semi-implicit, the filtered scale follows it
 /// (filter_spectrum_at()) for one global step, and the proven stiffness bound grows by
 /// time_level_stiffening(g) with time levels. `damping_growth`: the point's own g_d, the
 /// largest among its tets (tangent_growths_of()); the damping bound grows by 1 + g_d.

@@ -46,15 +46,19 @@ double largest_tangent_growth(const TetGeometry& geo, std::span<const int> tets,
 
 double tangent_growths_of(const TetGeometry& geo, std::span<const int> tets,
                           const std::vector<Vec3>& u, const MaterialLaw& law,
-                          std::vector<double>& damping) {
+                          std::vector<double>& stiffness, std::vector<double>& damping) {
   for (const int t : tets)
-    for (const int a : geo.tets[t]) damping[a] = 0.0;
+    for (const int a : geo.tets[t]) stiffness[a] = damping[a] = 0.0;
   double top = 0;
   for (const int t : tets) {
     const StrainTop e = strain_top(tet_gradient(geo.grad[t], geo.tets[t], u.data()));
-    top = std::max(top, growth_of(e, law, geo.scales_of(t, law.scales)));
+    const double g = growth_of(e, law, geo.scales_of(t, law.scales));
+    top = std::max(top, g);
     const double g_d = std::max(0.0, 2 * e.e_max);
-    for (const int a : geo.tets[t]) damping[a] = std::max(damping[a], g_d);
+    for (const int a : geo.tets[t]) {
+      stiffness[a] = std::max(stiffness[a], g);
+      damping[a] = std::max(damping[a], g_d);
+    }
   }
   return top;
 }

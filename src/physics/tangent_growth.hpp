@@ -39,10 +39,10 @@ double largest_tangent_growth(const TetGeometry& geo, std::span<const int> tets,
 double damping_growth(const Mat3& grad_u);
 
 /// The largest g over `tets` (largest_tangent_growth()), and per point of those tets the
-/// largest g_d among the listed tets it belongs to, into damping[point] (only those points
-/// are written; one entry per point of the level).
+/// largest g and the largest g_d among the listed tets it belongs to, into stiffness[point] and
+/// damping[point] (only those points are written; one entry per point of the level).
 double tangent_growths_of(const TetGeometry& geo, std::span<const int> tets,
                           const std::vector<Vec3>& u, const MaterialLaw& law,
-                          std::vector<double>& damping);
+                          std::vector<double>& stiffness, std::vector<double>& damping);
 
 }  // namespace mrsim

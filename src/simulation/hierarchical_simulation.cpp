@@ -585,14 +585,13 @@ void HierarchicalSimulation::update_stable_steps() {
   }
   // One global step: each level's bounds calibrated by its spectrum (LevelModel calibrated());
   // time levels keep the proven stiffness bounds, the damping calibrated. Both follow
-  // Green–Lagrange's growth when semi-implicit.
-  const std::vector<double> growth = tangent_growths();
-  for (int l = 0; l < L; ++l) {
-    const double g = growth.empty() ? 0.0 : growth[l];
+  // Green–Lagrange's growth when semi-implicit, each point its own (tangent_growths()).
+  const bool growing = tangent_growths();
+  for (int l = 0; l < L; ++l)
     for (int p : lists_->active(l))
-      loaded_[l][p] = calibrated(inertia_[l][p], *models_[l], semi_implicit_, !global_step_, g,
-                                 growth.empty() ? 0.0 : damping_growth_[l][p]);
-  }
+      loaded_[l][p] = calibrated(inertia_[l][p], *models_[l], semi_implicit_, !global_step_,
+                                 growing ? stiffness_growth_[l][p] : 0.0,
+                                 growing ? damping_growth_[l][p] : 0.0);
   if (contact_) {
     near_.clear();
     for (const std::vector<int>& c : contact_->candidates())
@@ -620,27 +619,31 @@ void HierarchicalSimulation::update_stable_steps() {
 }
 
 // The semi-implicit filter's blocks are probed at rest, so Green–Lagrange stiffening lands on
-// what it leaves explicit: each level's largest tangent growth g among the tets it evaluates,
-// at each frame start and topology change (physics/tangent_growth.hpp), sets its allowance
-// (spectral_bound.hpp filter_stiffening(), time_level_stiffening()). Not extrapolated with the
+// what it leaves explicit: each point's tangent growth g, the largest among its tets the level
+// evaluates, at each frame start and topology change (physics/tangent_growth.hpp), sets its
+// allowance (spectral_bound.hpp filter_stiffening(), time_level_stiffening()). Per point, as
+// the star bound it scales: a point whose tets do not stretch is not held to the growth under
+// a tool elsewhere on its level (until 2026-12-02 each level's largest g stood for all its
+// points; docs/integrators.md). Not extrapolated with the
 // velocities: just after a split the woken points' interpolated velocities made g a frame ahead
 // 12.7 on the little man (0.9 now). From the state alone, so a resumed run takes the same
-// steps. Empty when not tracked. The damping grows with the strain too, provably by 1 + g_d
+// steps. False when not tracked. The damping grows with the strain too, provably by 1 + g_d
 // (tangent_growth.hpp), and where ψ is large it is what the filter leaves explicit: each
-// point's own g_d scales its damping bound (damping_growth_). Without it the 125k-tet liver
+// point's own g_d scales its damping bound. Without it the 125k-tet liver
 // hierarchy ran 6 % beyond its true limit (docs/stability_matrix.md).
-std::vector<double> HierarchicalSimulation::tangent_growths() {
-  if (!tracks_stiffening_) return {};
-  std::vector<double> out(num_levels(), 0.0);
+bool HierarchicalSimulation::tangent_growths() {
+  if (!tracks_stiffening_) return false;
+  stiffness_growth_.resize(num_levels());
   damping_growth_.resize(num_levels());
   for (int l = 0; l < num_levels(); ++l) {
     const LevelModel& m = *models_[l];
+    stiffness_growth_[l].resize(m.num_points(), 0.0);
     damping_growth_[l].resize(m.num_points(), 0.0);
     if (stiffens(m))
-      out[l] = tangent_growths_of(m.geo, forces_[l]->tets(), states_[l].u, m.law,
-                                  damping_growth_[l]);
+      tangent_growths_of(m.geo, forces_[l]->tets(), states_[l].u, m.law, stiffness_growth_[l],
+                         damping_growth_[l]);
   }
-  return out;
+  return true;
 }
 
 double HierarchicalSimulation::step() const {

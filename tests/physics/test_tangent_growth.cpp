@@ -8,6 +8,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <string>
@@ -193,7 +194,7 @@ TEST(TangentGrowth, DeformedDampingStaysBelowTheGrownRestBound) {
   EXPECT_NEAR(damping_growth(G), 1.3 * 1.3 - 1, 1e-12);
 }
 
-TEST(TangentGrowth, PointsTakeTheLargestDampingGrowthOfTheirListedTets) {
+TEST(TangentGrowth, PointsTakeTheLargestGrowthsOfTheirListedTets) {
   const MaterialLaw law = green(5e4, 1e4);
   const TetMesh mesh = jittered_box(2, 2, 2, 0.2, 5);
   const LevelModel m = build_level_model(mesh, law);
@@ -213,15 +214,24 @@ TEST(TangentGrowth, PointsTakeTheLargestDampingGrowthOfTheirListedTets) {
   }
   listed.push_back(other);
   std::sort(listed.begin(), listed.end());
-  std::vector<double> damping(n, -1.0);  // -1: not written
-  const double g = tangent_growths_of(m.geo, listed, u, law, damping);
+  std::vector<double> stiffness(n, -1.0), damping(n, -1.0);  // -1: not written
+  const double g = tangent_growths_of(m.geo, listed, u, law, stiffness, damping);
   EXPECT_EQ(g, largest_tangent_growth(m.geo, listed, u, law));
-  std::vector<double> expected(n, -1.0);
+  std::vector<double> expected(n, -1.0), expected_g(n, -1.0);
   for (int t : listed)
-    for (int a : m.geo.tets[t]) expected[a] = std::max(
-        expected[a] < 0 ? 0.0 : expected[a],
-        damping_growth(tet_gradient(m.geo.grad[t], m.geo.tets[t], u.data())));
-  for (int i = 0; i < n; ++i) EXPECT_EQ(damping[i], expected[i]) << "point " << i;
+    for (int a : m.geo.tets[t]) {
+      const Mat3 grad_u = tet_gradient(m.geo.grad[t], m.geo.tets[t], u.data());
+      expected[a] = std::max(expected[a] < 0 ? 0.0 : expected[a], damping_growth(grad_u));
+      const std::array<int, 1> one{t};
+      expected_g[a] = std::max(expected_g[a] < 0 ? 0.0 : expected_g[a],
+                               largest_tangent_growth(m.geo, one, u, law));
+    }
+  for (int i = 0; i < n; ++i) {
+    EXPECT_EQ(damping[i], expected[i]) << "point " << i;
+    EXPECT_EQ(stiffness[i], expected_g[i]) << "point " << i;
+  }
+  EXPECT_GT(stiffness[far], 0.01);
+  EXPECT_EQ(*std::max_element(stiffness.begin(), stiffness.end()), g);
   EXPECT_GT(damping[far], 0.01);
   EXPECT_EQ(std::count(damping.begin(), damping.end(), -1.0),
             std::count(expected.begin(), expected.end(), -1.0));
