@@ -95,10 +95,11 @@ inline bool is_held(const LevelModel& m, int i) { return !m.held.empty() && m.he
 /// (time_level_damping_scale): where damping sets the step, the damping and stiffness modes
 /// apart were 1.6–4.6 times too cautious on the liver.
 /// `growth`: the point's tangent growth g now, the largest among its tets (physics/
-/// tangent_growth.hpp; 0, what the set-up assumes, gives filter_spectrum itself). Semi-implicit, the filtered scale follows it
-/// (filter_spectrum_at()) for one global step, and the proven stiffness bound grows by
-/// time_level_stiffening(g) with time levels. `damping_growth`: the point's own g_d, the
-/// largest among its tets (tangent_growths_of()); the damping bound grows by 1 + g_d.
+/// tangent_growth.hpp; 0, what the set-up assumes, gives filter_spectrum itself).
+/// Semi-implicit, the filtered scale follows it (filter_spectrum_at()) for one global step,
+/// and the proven stiffness bound grows by time_level_stiffening(g) with time levels.
+/// `damping_growth`: the point's own g_d, the largest among its tets (tangent_growths_of());
+/// the damping bound grows by 1 + g_d.
 PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit = false,
                         bool time_levels = false, double growth = 0.0,
                         double damping_growth = 0.0);

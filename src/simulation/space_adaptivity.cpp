@@ -180,9 +180,12 @@ void SpaceAdaptivity::count_calm(const HierarchicalSimulation& sim) {
   for (int l = sim.num_levels() - 2; l >= 0; --l)
     for (int p : sim.lists().ghost_sub(l)) {
       bool calm = true;
-      for (int c : sim.hierarchy().links(l).children.row(p))
-        calm = calm && (sim.hierarchy().subdivided(l + 1, c) ? calm_streak_[l + 1][c] > 0
-                                                            : criterion_[l + 1][c] < s_.coarsen_below);
+      for (int c : sim.hierarchy().links(l).children.row(p)) {
+        const bool below = sim.hierarchy().subdivided(l + 1, c)
+                               ? calm_streak_[l + 1][c] > 0
+                               : criterion_[l + 1][c] < s_.coarsen_below;
+        calm = calm && below;
+      }
       calm_streak_[l][p] = calm ? calm_streak_[l][p] + 1 : 0;
     }
 }
