@@ -3,7 +3,8 @@
 // /frames/wall_time_parts). The simulation times its own tasks (internal forces, ghosts,
 // contact); the run loop times the phases around them (integration, adaptivity, output). A
 // phase is charged its elapsed time less what the simulation's timers counted meanwhile, so
-// nothing is counted twice, and what no timer saw is `other`: the parts sum to the frame.
+// nothing is counted twice, and what no timer saw is `other`: the parts sum to the frame, plus
+// what was carried into it (carry()).
 #include <algorithm>
 #include <chrono>
 #include <numeric>
@@ -22,7 +23,12 @@ class FrameTiming {
   void restart() {
     start_ = Clock::now();
     at_start_ = clock_.parts();
+    carried_ = {};
   }
+
+  /// Charges `task` with `seconds` spent for this frame before its clock started: the previous
+  /// frame's log row, whose writing that row cannot hold. finish() adds it beside the rest.
+  void carry(Task task, double seconds) { carried_[static_cast<std::size_t>(task)] += seconds; }
   Clock::time_point start() const { return start_; }
 
   /// Everything the clock has counted so far (s): pass it to add_phase.
@@ -55,6 +61,7 @@ class FrameTiming {
     const double seen = std::accumulate(parts.begin(), parts.end(), 0.0);
     const double total = std::chrono::duration<double>(Clock::now() - start_).count();
     parts[other] = std::max(0.0, total - seen);
+    for (std::size_t k = 0; k < kTaskCount; ++k) parts[k] += carried_[k];
     return parts;
   }
 
@@ -62,6 +69,7 @@ class FrameTiming {
   TaskClock& clock_;
   Clock::time_point start_;
   TaskClock::Parts at_start_{};
+  TaskClock::Parts carried_{};
 };
 
 }  // namespace mrsim

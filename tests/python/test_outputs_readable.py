@@ -178,6 +178,16 @@ def check_summary_shares(checks, summary):
                   f"wall_time")
 
 
+def check_row_writes_counted(checks, log, summary):
+    """Each log row is written after it took its parts: the frame after it carries that time in
+    its `output`, and the last row's is in summary.json's sum alone, so the run's output exceeds
+    the frames' (equal if the writes went uncounted)."""
+    frames = float(log["/frames/wall_time_parts"][:, TASKS.index("output")].sum())
+    run = summary.get("wall_time_parts", {}).get("output", 0.0)
+    checks.expect(run > frames, f"summary.json output {run} s > the frames' {frames} s "
+                                f"(the last log row's write)")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--binary", required=True)
@@ -214,6 +224,8 @@ def main():
             summary = json.load(f)
             checks.expect(isinstance(summary, dict), "summary.json is not a JSON object")
             check_summary_shares(checks, summary)
+            with h5py.File(os.path.join(out_dir, "log.h5"), "r") as log:
+                check_row_writes_counted(checks, log, summary)
             checks.expect(summary.get("force_kernel") in ("avx512", "avx2", "baseline"),
                           f"summary.json force_kernel: {summary.get('force_kernel')}")
 

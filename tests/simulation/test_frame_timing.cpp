@@ -39,6 +39,23 @@ TEST(FrameTiming, PhasesDoNotCountTheInnerTimersTwice) {
   EXPECT_NEAR(sum(parts), total, 1e-3);
 }
 
+// The previous frame's log row is written after that row took its parts: its time is carried
+// into the next frame's output, beside the frame's own clock, and restart() forgets it.
+TEST(FrameTiming, CarriedTimeIsAddedToItsTaskAndNotTakenFromOther) {
+  TaskClock clock;
+  const auto t0 = TaskClock::Clock::now();
+  FrameTiming timing(clock);
+  timing.carry(Task::Output, 0.25);
+  std::this_thread::sleep_for(5ms);
+  const TaskClock::Parts parts = timing.finish();
+  const double total = std::chrono::duration<double>(TaskClock::Clock::now() - t0).count();
+  EXPECT_DOUBLE_EQ(part(parts, Task::Output), 0.25);
+  EXPECT_GE(part(parts, Task::Other), 0.005 - 1e-4);
+  EXPECT_NEAR(sum(parts), total + 0.25, 1e-3);
+  timing.restart();
+  EXPECT_EQ(part(timing.finish(), Task::Output), 0.0);
+}
+
 TEST(FrameTiming, TaskTimerAddsItsScopeAndNullIsNotTimed) {
   TaskClock clock;
   {
