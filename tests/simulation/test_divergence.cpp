@@ -1,6 +1,7 @@
 // The divergence message (issue 15 point 4): it names the level and the point, where the point
 // sits in the hierarchy (the usual culprit: a coarse point next to the fine region), and its
-// step against its stable step estimate in force, so that a user knows what to change.
+// step against its stable step estimate and the smallest in force, so that a user knows what to
+// change.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,7 +45,45 @@ TEST(Divergence, MessageNamesThePlaceAndTheStepAgainstTheEstimate) {
   EXPECT_NE(why->find("against its stable step estimate"), std::string::npos) << *why;
   // 10 ms is far above this point's estimate: the message says so and what to do.
   EXPECT_GT(1e-2, 2 * sim.stable_steps(0)[coarse]);
-  EXPECT_NE(why->find("above it: raise time.substeps"), std::string::npos) << *why;
+  EXPECT_NE(why->find("stable step estimate in force"), std::string::npos) << *why;
+  EXPECT_NE(why->find("a step is above its estimate"), std::string::npos) << *why;
+  EXPECT_NE(why->find("raise time.substeps"), std::string::npos) << *why;
+}
+
+// The first non-finite point is the first in list order, anywhere once a blow-up has spread:
+// the advice follows the point whose step is furthest above its estimate, and names it.
+TEST(Divergence, NonFiniteMessageNamesThePointAboveItsEstimate) {
+  const auto meshes = mrsim::testing::jittered_box_levels({{4, 3, 3}}, 5, 0.3);
+  const HierarchicalSimulation probe({&meshes[0]}, setup(1e-6));
+  const std::vector<double>& estimates = probe.stable_steps(0);
+  int calm = -1;  // a free point with the largest estimate
+  for (int p : probe.lists().active(0))
+    if (probe.state(0).free_point[p] && (calm < 0 || estimates[p] > estimates[calm])) calm = p;
+  const double in_force = probe.stable_step_in_force().dt;
+  ASSERT_LT(1.2 * in_force, estimates[calm]);
+  // A step above the smallest estimate, below the calm point's own.
+  HierarchicalSimulation sim({&meshes[0]}, setup(std::sqrt(in_force * estimates[calm])));
+  sim.state(0).u[calm].y() = INFINITY;
+  const DivergenceGuard guard = DivergenceGuard::for_level(sim.model(0), 1.0);
+  const auto why = guard.check(sim, 0.0);
+  ASSERT_TRUE(why.has_value());
+  EXPECT_NE(why->find("point " + std::to_string(calm) + " of level 0"), std::string::npos) << *why;
+  const std::string culprit =
+      "at point " + std::to_string(sim.stable_step_in_force().point) + " of level 0): raise";
+  EXPECT_NE(why->find(culprit), std::string::npos) << *why;
+  EXPECT_EQ(why->find("within its estimate"), std::string::npos) << *why;
+}
+
+// Every step within its estimate: the advice is about the load, not the step.
+TEST(Divergence, NonFiniteMessageWithinTheEstimatesBlamesTheLoad) {
+  const auto meshes = mrsim::testing::jittered_box_levels({{3, 2, 2}}, 5, 0.2);
+  HierarchicalSimulation sim({&meshes[0]}, setup(1e-7));
+  const int p = sim.lists().active(0).back();
+  sim.state(0).v[p].z() = NAN;
+  const auto why = DivergenceGuard::for_level(sim.model(0), 1.0).check(sim, 0.0);
+  ASSERT_TRUE(why.has_value());
+  EXPECT_NE(why->find("every step is within its estimate"), std::string::npos) << *why;
+  EXPECT_EQ(why->find("raise time.substeps"), std::string::npos) << *why;
 }
 
 TEST(Divergence, EnergyMessageNamesTheStableStepInForce) {
