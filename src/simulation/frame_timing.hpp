@@ -29,6 +29,7 @@ class FrameTiming {
   /// Charges `task` with `seconds` spent for this frame before its clock started: the previous
   /// frame's log row, whose writing that row cannot hold. finish() adds it beside the rest.
   void carry(Task task, double seconds) { carried_[static_cast<std::size_t>(task)] += seconds; }
+
   Clock::time_point start() const { return start_; }
 
   /// Everything the clock has counted so far (s): pass it to add_phase.
