@@ -128,15 +128,18 @@ void block_forces(const GreenKernelData& m, const int* tets, const double (*u)[3
   double g[4][3][B], G[9][B], Gd[9][B], F[9][B], S[9][B], P[9][B];
   shape_gradients<B>(m, tets, g);
   gradients<B, Damped>(m, tets, u, v, g, G, Gd);
-  // E = ½ (G + Gᵀ + GᵀG); S = λ tr(E) I + 2μ E; F = I + G.
+  // E = ½ (G + Gᵀ + GᵀG); S = λ tr(E) I + 2μ E; F = I + G. E is computed once for (i, j) and
+  // (j, i): IEEE sums and products commute, so green_piola()'s E(j, i) is the same bits.
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
+    for (int j = i; j < 3; ++j)
       for (int b = 0; b < B; ++b) {
         const double gtg =
             left(G[MRSIM_IX(0, i)][b] * G[MRSIM_IX(0, j)][b],
                  G[MRSIM_IX(1, i)][b] * G[MRSIM_IX(1, j)][b],
                  G[MRSIM_IX(2, i)][b] * G[MRSIM_IX(2, j)][b]);
-        S[MRSIM_IX(i, j)][b] = 0.5 * ((G[MRSIM_IX(i, j)][b] + G[MRSIM_IX(j, i)][b]) + gtg);
+        const double e = 0.5 * ((G[MRSIM_IX(i, j)][b] + G[MRSIM_IX(j, i)][b]) + gtg);
+        S[MRSIM_IX(i, j)][b] = e;
+        S[MRSIM_IX(j, i)][b] = e;
       }
   for (int b = 0; b < B; ++b) {
     const double tr = right(S[0][b], S[4][b], S[8][b]);  // still E here
