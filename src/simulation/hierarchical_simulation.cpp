@@ -302,7 +302,8 @@ void HierarchicalSimulation::run_steps(int steps) {
 
 // The broad phase over the coming frame, then the contact forces again from its candidates
 // (the first step must see every vertex that already touches a tool); then the stable steps in
-// force, which follow the skin near the tools and Green–Lagrange's growth (tangent_growths()).
+// force, which follow the skin near the tools and Green–Lagrange's growth
+// (refresh_tangent_growths()).
 void HierarchicalSimulation::begin_frame(double duration) {
   if (contact_) {
     {
@@ -585,13 +586,13 @@ void HierarchicalSimulation::update_stable_steps() {
   }
   // One global step: each level's bounds calibrated by its spectrum (LevelModel calibrated());
   // time levels keep the proven stiffness bounds, the damping calibrated. Both follow
-  // Green–Lagrange's growth when semi-implicit, each point its own (tangent_growths()).
-  const bool growing = tangent_growths();
+  // Green–Lagrange's growth when semi-implicit, each point its own (refresh_tangent_growths()).
+  if (tracks_stiffening_) refresh_tangent_growths();
   for (int l = 0; l < L; ++l)
     for (int p : lists_->active(l))
       loaded_[l][p] = calibrated(inertia_[l][p], *models_[l], semi_implicit_, !global_step_,
-                                 growing ? stiffness_growth_[l][p] : 0.0,
-                                 growing ? damping_growth_[l][p] : 0.0);
+                                 tracks_stiffening_ ? stiffness_growth_[l][p] : 0.0,
+                                 tracks_stiffening_ ? damping_growth_[l][p] : 0.0);
   if (contact_) {
     near_.clear();
     for (const std::vector<int>& c : contact_->candidates())
@@ -624,15 +625,14 @@ void HierarchicalSimulation::update_stable_steps() {
 // allowance (spectral_bound.hpp filter_stiffening(), time_level_stiffening()). Per point, as
 // the star bound it scales: a point whose tets do not stretch is not held to the growth under
 // a tool elsewhere on its level (until 2026-12-02 each level's largest g stood for all its
-// points; docs/integrators.md). Not extrapolated with the
-// velocities: just after a split the woken points' interpolated velocities made g a frame ahead
-// 12.7 on the little man (0.9 now). From the state alone, so a resumed run takes the same
-// steps. False when not tracked. The damping grows with the strain too, provably by 1 + g_d
+// points; docs/integrators.md). Not extrapolated with the velocities: just after a split the
+// woken points' interpolated velocities made g a frame ahead 12.7 on the little man (0.9 now).
+// From the state alone, so a resumed run takes the same steps. Called only when tracked
+// (tracks_stiffening_). The damping grows with the strain too, provably by 1 + g_d
 // (tangent_growth.hpp), and where ψ is large it is what the filter leaves explicit: each
-// point's own g_d scales its damping bound. Without it the 125k-tet liver
-// hierarchy ran 6 % beyond its true limit (docs/stability_matrix.md).
-bool HierarchicalSimulation::tangent_growths() {
-  if (!tracks_stiffening_) return false;
+// point's own g_d scales its damping bound. Without it the 125k-tet liver hierarchy ran 6 %
+// beyond its true limit (docs/stability_matrix.md).
+void HierarchicalSimulation::refresh_tangent_growths() {
   stiffness_growth_.resize(num_levels());
   damping_growth_.resize(num_levels());
   for (int l = 0; l < num_levels(); ++l) {
@@ -643,7 +643,6 @@ bool HierarchicalSimulation::tangent_growths() {
       tangent_growths_of(m.geo, forces_[l]->tets(), states_[l].u, m.law, stiffness_growth_[l],
                          damping_growth_[l]);
   }
-  return true;
 }
 
 double HierarchicalSimulation::step() const {

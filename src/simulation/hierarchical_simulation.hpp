@@ -206,7 +206,7 @@ class HierarchicalSimulation {
   void refile_fixed_ghosts();
   void update_inertia();
   void update_stable_steps();
-  bool tangent_growths();
+  void refresh_tangent_growths();
   // The stable steps change between topology changes: with the contact near the tools and with
   // Green–Lagrange's growth, refreshed at each frame start.
   bool steps_follow_frames() const { return contact_ || tracks_stiffening_; }
@@ -263,10 +263,10 @@ class HierarchicalSimulation {
   bool semi_implicit_ = false;
   bool global_step_ = true;  // no time levels: stable steps calibrated by each level's spectrum
   // Semi-implicit with a Green–Lagrange level: the stable steps follow the strain
-  // (tangent_growths(); the filter's allowance, or the time levels' bounds).
+  // (refresh_tangent_growths(); the filter's allowance, or the time levels' bounds).
   bool tracks_stiffening_ = false;
   // [level][point]: g and g_d of the points of the evaluated tets (the largest among each
-  // point's tets), refreshed with tangent_growths().
+  // point's tets), refreshed with refresh_tangent_growths().
   std::vector<std::vector<double>> stiffness_growth_, damping_growth_;
   double step_share_ = 1.0;  // of the kick-drift stable step (Newton-Cotes: half)
   TaskClock tasks_;

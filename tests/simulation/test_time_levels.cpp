@@ -340,6 +340,28 @@ TEST(TimeLevels, FreeBodyKeepsItsMomentumUnderTheMomentumRestoringSemiImplicitSt
   EXPECT_LT(dl, 2e-5);
 }
 
+// Each point's tangent growth g and damping growth g_d: the largest among its tets, each tet's
+// from the single-tet functions (the reference the simulation's per-point pass is held to).
+struct PointGrowths {
+  std::vector<double> g, g_d;
+};
+
+PointGrowths point_growths(const LevelModel& m, const std::vector<Vec3>& u,
+                           const MaterialLaw& law) {
+  PointGrowths out{std::vector<double>(m.num_points(), 0.0),
+                   std::vector<double>(m.num_points(), 0.0)};
+  for (int t = 0; t < m.num_tets(); ++t) {
+    const std::array<int, 1> one{t};
+    const double g = largest_tangent_growth(m.geo, one, u, law);
+    const double d = damping_growth(tet_gradient(m.geo.grad[t], m.geo.tets[t], u.data()));
+    for (int a : m.geo.tets[t]) {
+      out.g[a] = std::max(out.g[a], g);
+      out.g_d[a] = std::max(out.g_d[a], d);
+    }
+  }
+  return out;
+}
+
 // Semi-implicit with time levels, a Green–Lagrange level: the filter's blocks are probed at
 // rest, so each frame start scales each point's proven stiffness bound by
 // time_level_stiffening(g) of its own tangent growth now, the largest among its tets (without
@@ -361,12 +383,7 @@ TEST(TimeLevels, SemiImplicitStepsFollowGreenLagrangeStiffening) {
     for (int f = 0; f < 5; ++f) sim.advance_frame();
     const LevelModel& m = sim.model(0);
     const double g = largest_tangent_growth(m.geo, all, sim.state(0).u, s.law);
-    std::vector<double> g_p(m.num_points(), 0.0);
-    for (int t : all) {
-      const std::array<int, 1> one{t};
-      for (int a : m.geo.tets[t])
-        g_p[a] = std::max(g_p[a], largest_tangent_growth(m.geo, one, sim.state(0).u, s.law));
-    }
+    const std::vector<double> g_p = point_growths(m, sim.state(0).u, s.law).g;
     sim.advance_frame();  // its start reads the steps at this state
     ASSERT_GT(g, 0.1);
     int checked = 0, below_top = 0;
@@ -385,13 +402,11 @@ TEST(TimeLevels, SemiImplicitStepsFollowGreenLagrangeStiffening) {
 
 // The strain-rate damping grows with the strain too (physics/tangent_growth.hpp): semi-implicit,
 // with one global step or with time levels, each frame start scales every point's damping
-// bound by 1 + g_d of its own most stretched tet (and its stiffness allowance by its own g). Where ψ is large that is what the filter
-// leaves explicit: without it the 125k-tet liver hierarchy ran 6 % beyond its true limit
-// (docs/stability_matrix.md).
+// bound by 1 + g_d of its own most stretched tet (and its stiffness allowance by its own g).
+// Where ψ is large that is what the filter leaves explicit: without it the 125k-tet liver
+// hierarchy ran 6 % beyond its true limit (docs/stability_matrix.md).
 TEST(TimeLevels, SemiImplicitDampingFollowsTheStrainAtEachPoint) {
   const TetMesh mesh = graded_beam({{16, 1}});
-  std::vector<int> all(mesh.tets.size());
-  std::iota(all.begin(), all.end(), 0);
   for (bool levels : {false, true}) {
     HierarchySetup s = clamped(mesh, Integrator::SemiImplicit);
     s.law.strain = StrainMeasure::GreenLagrange;
@@ -401,16 +416,7 @@ TEST(TimeLevels, SemiImplicitDampingFollowsTheStrainAtEachPoint) {
     for (int f = 0; f < 5; ++f) sim.advance_frame();
     const LevelModel& m = sim.model(0);
     const std::vector<Vec3> u = sim.state(0).u;
-    std::vector<double> g_p(m.num_points(), 0.0), g_d(m.num_points(), 0.0);
-    for (int t : all) {
-      const std::array<int, 1> one{t};
-      const double g = largest_tangent_growth(m.geo, one, u, s.law);
-      const double d = damping_growth(tet_gradient(m.geo.grad[t], m.geo.tets[t], u.data()));
-      for (int a : m.geo.tets[t]) {
-        g_p[a] = std::max(g_p[a], g);
-        g_d[a] = std::max(g_d[a], d);
-      }
-    }
+    const auto [g_p, g_d] = point_growths(m, u, s.law);
     sim.advance_frame();  // its start reads the steps at this state
     int shorter = 0, checked = 0;
     for (int p = 0; p < m.num_points(); ++p) {
