@@ -1,9 +1,10 @@
 #include "simulation/calibration_cache.hpp"
 
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
-#include <nlohmann/json.hpp>
-
+#include "core/byte_record.hpp"
 #include "simulation/result_cache.hpp"
 
 namespace mrsim {
@@ -14,36 +15,38 @@ namespace {
 // 2: per_tet's local loads; 3: per_tet's seven factors per tet, sags at the finest points;
 // 4: the per-tet fit without Eigen's thread-count-dependent parallel products.
 constexpr int kFitVersion = 4;
+constexpr std::size_t kAnyCount = std::numeric_limits<std::size_t>::max();
 
+// Binary since 2026-12-02: as JSON, liver_probe's per-tet factors (14 000 numbers, 340 KB) took
+// a fifth of its warm set-up's instructions to parse (strtod).
 std::filesystem::path file_of(const std::filesystem::path& dir, const std::string& key) {
-  return dir / ("level_calibration_" + key + ".json");
+  return dir / ("level_calibration_" + key + ".bin");
 }
 
-nlohmann::json to_json(const LevelCalibration& c) {
-  nlohmann::json j = {{"scales", c.scales.components()}, {"iterations", c.iterations}};
-  if (!c.tet_tensors.empty()) j["tet_tensors"] = c.tet_tensors;
-  j["local_fitted"] = c.local_fitted;
-  for (const CalibrationRatios& r : kCalibrationRatios)
-    j[std::string(r.quantity) + "_" + r.when] = c.*r.member;
-  return j;
+void put(ByteRecordWriter& w, const LevelCalibration& c) {
+  w.value(c.scales.components());
+  w.value(c.iterations);
+  w.value(static_cast<std::uint8_t>(c.local_fitted));
+  w.array(c.tet_tensors);
+  for (const CalibrationRatios& r : kCalibrationRatios) w.array(c.*r.member);
 }
 
-LevelCalibration from_json(const nlohmann::json& j) {
+LevelCalibration get(ByteRecordReader& r, std::size_t tets) {
   LevelCalibration c;
-  const auto s = j.at("scales").get<std::array<double, 7>>();
+  const auto s = r.value<std::array<double, 7>>();
   for (double x : s)
-    if (!(x > 0)) throw std::runtime_error("non-positive factor");
+    if (!(x > 0) || !std::isfinite(x)) throw std::runtime_error("non-positive factor");
   c.scales = StiffnessScales::from_components(s);
-  if (j.contains("tet_tensors")) {
-    c.tet_tensors = j.at("tet_tensors").get<TetTensors>();
-    for (const auto& q : c.tet_tensors)
-      for (double x : q)
-        if (!(x > 0) || !std::isfinite(x)) throw std::runtime_error("a non-positive tet factor");
-  }
-  for (const CalibrationRatios& r : kCalibrationRatios)
-    c.*r.member = j.at(std::string(r.quantity) + "_" + r.when).get<std::vector<double>>();
-  c.iterations = j.at("iterations").get<int>();
-  c.local_fitted = j.at("local_fitted").get<bool>();
+  c.iterations = r.value<int>();
+  c.local_fitted = r.value<std::uint8_t>() != 0;
+  c.tet_tensors = r.array<std::array<double, 7>>(tets);
+  if (!c.tet_tensors.empty() && c.tet_tensors.size() != tets)
+    throw std::runtime_error("per-tet factors of another mesh");
+  for (const auto& q : c.tet_tensors)
+    for (double x : q)
+      if (!(x > 0) || !std::isfinite(x)) throw std::runtime_error("a non-positive tet factor");
+  for (const CalibrationRatios& ratios : kCalibrationRatios)
+    c.*ratios.member = r.array<double>(kAnyCount);
   return c;
 }
 
@@ -77,13 +80,14 @@ std::optional<std::vector<LevelCalibration>> read_cached_calibration(
     const std::vector<const TetMesh*>& meshes) {
   if (dir.empty()) return std::nullopt;
   std::vector<LevelCalibration> out;
-  const bool read = read_cached_result(file_of(dir, key), key, "calibration", [&](const nlohmann::json& j) {
-    for (const nlohmann::json& level : j.at("levels")) out.push_back(from_json(level));
-    if (out.size() != meshes.size()) throw std::runtime_error("another number of levels");
-    for (std::size_t l = 0; l < out.size(); ++l)
-      if (!out[l].tet_tensors.empty() && out[l].tet_tensors.size() != meshes[l]->tets.size())
-        throw std::runtime_error("per-tet factors of another mesh");
-  });
+  const bool read =
+      read_cached_bytes(file_of(dir, key), key, "calibration", [&](std::string_view bytes) {
+        ByteRecordReader r(bytes);
+        if (r.value<std::uint64_t>() != meshes.size())
+          throw std::runtime_error("another number of levels");
+        for (const TetMesh* mesh : meshes) out.push_back(get(r, mesh->tets.size()));
+        r.expect_end();
+      });
   if (!read) return std::nullopt;
   return out;
 }
@@ -91,9 +95,10 @@ std::optional<std::vector<LevelCalibration>> read_cached_calibration(
 void write_cached_calibration(const std::filesystem::path& dir, const std::string& key,
                               const std::vector<LevelCalibration>& calibration) {
   if (dir.empty()) return;
-  nlohmann::json j = {{"levels", nlohmann::json::array()}};
-  for (const LevelCalibration& c : calibration) j["levels"].push_back(to_json(c));
-  write_cached_result(file_of(dir, key), key, std::move(j), "calibration");
+  ByteRecordWriter w;
+  w.value(static_cast<std::uint64_t>(calibration.size()));
+  for (const LevelCalibration& c : calibration) put(w, c);
+  write_cached_bytes(file_of(dir, key), key, std::move(w).take(), "calibration");
 }
 
 }  // namespace mrsim

@@ -3,9 +3,10 @@
 // a few seconds at set-up (one factorisation of the finest level, one per fit iteration of each
 // coarser level); sweeps and repeated runs of one hierarchy pay it once. The result is kept in
 // the result cache (simulation/result_cache.hpp) under calibration/,
-// one JSON file per key: a hash of everything the fit reads (each level's points, tets and
-// fixed flags, λ, μ, density, the fit's version). The numbers round-trip exactly, so a run
-// that reads the cache is the run that computed it, bit for bit.
+// one binary file per key (read_cached_bytes: a header with the key and a checksum): a hash of
+// everything the fit reads (each level's points, tets and fixed flags, λ, μ, density, the
+// fit's version). The doubles are stored as they are, so a run that reads the cache is the run
+// that computed it, bit for bit.
 #include <cstdint>
 #include <filesystem>
 #include <optional>

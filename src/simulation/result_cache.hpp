@@ -1,11 +1,13 @@
 #pragma once
 // Set-up results that depend only on a run's inputs and cost time to compute (the coarse levels'
 // calibration, the levels' spectra) are kept between runs, so that sweeps and repeated runs of
-// one hierarchy pay them once. One JSON file per result under $MRSIM_CACHE_DIR/<kind>/ (default
+// one hierarchy pay them once. One file per result under $MRSIM_CACHE_DIR/<kind>/ (default
 // $XDG_CACHE_HOME/mrsim/<kind>/, else ~/.cache/mrsim/<kind>/), named by a hash of everything
 // the computation reads; at most 512 files and 256 MiB per kind, the oldest going first.
-// Deleting the folder is always safe: the next run computes again. Results too large for JSON
-// (the hierarchy's links, simulation/link_cache.hpp) are kept in binary, with a checksum.
+// Deleting the folder is always safe: the next run computes again. Small results are JSON (the
+// spectra); large ones (the calibration's per-tet factors, the hierarchy's links,
+// simulation/link_cache.hpp) are binary, with a checksum: parsing them as text cost more than
+// the rest of a warm set-up.
 #include <cstdint>
 #include <filesystem>
 #include <functional>

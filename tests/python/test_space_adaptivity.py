@@ -163,7 +163,7 @@ def test_calibration_logged(binary, source, tmp):
           and all(abs(f - 1) < 0.06 for f in f1),
           "beam L0 alone sagged %.2f of L2; calibrated, every sag ratio within 7 %% (%s) and f1 "
           "within 6 %% (%s)" % (before.min(), [np.round(a, 3) for a in after], np.round(f1, 3)))
-    files = [f for f in os.listdir(os.path.join(cache, "calibration")) if f.endswith(".json")]
+    files = [f for f in os.listdir(os.path.join(cache, "calibration")) if f.endswith(".bin")]
     check(len(files) == 1, "one cache file written (%s)" % files)
     again = os.path.join(tmp, "calibrated_again")
     check("read from the cache" in run_calibrated(binary, source, again, cache),
