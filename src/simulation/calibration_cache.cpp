@@ -1,5 +1,6 @@
 #include "simulation/calibration_cache.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -31,20 +32,23 @@ void put(ByteRecordWriter& w, const LevelCalibration& c) {
   for (const CalibrationRatios& r : kCalibrationRatios) w.array(c.*r.member);
 }
 
+// A stiffness factor read back must be one a fit can give: positive and finite.
+void check_factors(const std::array<double, 7>& factors, const char* what) {
+  for (double x : factors)
+    if (!(x > 0) || !std::isfinite(x)) throw std::runtime_error(what);
+}
+
 LevelCalibration get(ByteRecordReader& r, std::size_t tets) {
   LevelCalibration c;
   const auto s = r.value<std::array<double, 7>>();
-  for (double x : s)
-    if (!(x > 0) || !std::isfinite(x)) throw std::runtime_error("non-positive factor");
+  check_factors(s, "non-positive factor");
   c.scales = StiffnessScales::from_components(s);
   c.iterations = r.value<int>();
   c.local_fitted = r.value<std::uint8_t>() != 0;
   c.tet_tensors = r.array<std::array<double, 7>>(tets);
   if (!c.tet_tensors.empty() && c.tet_tensors.size() != tets)
     throw std::runtime_error("per-tet factors of another mesh");
-  for (const auto& q : c.tet_tensors)
-    for (double x : q)
-      if (!(x > 0) || !std::isfinite(x)) throw std::runtime_error("a non-positive tet factor");
+  for (const auto& q : c.tet_tensors) check_factors(q, "a non-positive tet factor");
   for (const CalibrationRatios& ratios : kCalibrationRatios)
     c.*ratios.member = r.array<double>(kAnyCount);
   return c;
