@@ -142,6 +142,26 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
   return best;
 }
 
+long long computed_substeps(double frame_dt, double allowed, bool time_levels, int parts) {
+  long long n = 1;
+  if (time_levels) {
+    // The time levels halve the step (frame_dt / 2^k): a power of two, with two finer levels
+    // than stability needs for the velocity-change rule (method.md §5.2).
+    while (n <= kMaxSubsteps && frame_dt / n > allowed) n *= 2;
+    return std::min<long long>(4 * n, kMaxSubsteps);
+  }
+  // One global step: the fewest steps that fit, so the step is the largest the estimate
+  // allows (a power of two took up to twice the steps needed: liver_probe 128 for 104), a
+  // multiple of the frame's split checks so that its parts are equal.
+  const double needed = std::ceil(frame_dt / allowed);
+  n = needed < static_cast<double>(kMaxSubsteps) ? std::max(1LL, static_cast<long long>(needed))
+                                                 : kMaxSubsteps;
+  while (n > 1 && frame_dt / (n - 1) <= allowed) --n;  // ceil's rounding, either way
+  while (n < kMaxSubsteps && frame_dt / n > allowed) ++n;
+  n = (n + parts - 1) / parts * parts;
+  return std::min<long long>(n, kMaxSubsteps / parts * parts);
+}
+
 Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
                               const LevelLaws* laws,
                               const std::vector<LevelModel>* models, const Skin* skin) {
@@ -182,11 +202,8 @@ Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMes
     }
     return sc;
   }
-  // Time levels: two finer levels than stability needs, for the velocity-change rule (§5.2).
-  const int extra = time_levels ? 4 : 1;
-  long long substeps = 1;
-  while (substeps <= kMaxSubsteps && sc.time.frame_dt / substeps > allowed) substeps *= 2;
-  substeps = std::min<long long>(substeps * extra, kMaxSubsteps);  // within the cap (above)
+  const long long substeps = computed_substeps(sc.time.frame_dt, allowed, time_levels,
+                                               sc.space.enabled ? sc.space.split_checks : 1);
   Scenario out = sc;
   out.time.substeps = static_cast<int>(substeps);
   out.resolved["time"]["substeps"] = out.time.substeps;

@@ -3,9 +3,9 @@
 // point of every level that may become active must satisfy dt <= C × its stable-step estimate
 // (physics/stable_step_bound.hpp: Gershgorin bound of its star's stiffness over its mass,
 // damping, and the contact penalty the tools can add, contact/contact_bound.hpp), C =
-// time.courant. A scenario without `time.substeps` gets the smallest power of two of steps per
-// frame that does (a power of two, so that the time levels nest in it); one that needs more
-// than kMaxSubsteps is an input error naming the point and the cause. During the run the
+// time.courant. A scenario without `time.substeps` gets the fewest steps per frame that do
+// (computed_substeps(): with time levels a power of two, so that they nest in it); one that
+// needs more than kMaxSubsteps is an input error naming the point and the cause. During the run the
 // estimate follows the topology (interface masses and stiffness through ghosts,
 // HierarchicalSimulation::stable_step_in_force).
 #include <string>
@@ -46,6 +46,12 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
                        const LevelLaws* laws = nullptr,
                        const std::vector<LevelModel>* models = nullptr,
                        const Skin* skin = nullptr);
+
+/// Steps per frame for a step of at most `allowed` (C × the estimate): with time levels the
+/// smallest power of two that fits, times 4 (two finer levels for the velocity-change rule);
+/// with one global step the smallest multiple of `parts` (adaptivity.space.split_checks) that
+/// fits. At most kMaxSubsteps.
+long long computed_substeps(double frame_dt, double allowed, bool time_levels, int parts);
 
 /// The scenario with time.substeps filled in when it was omitted (also in `resolved`, so the
 /// written scenario.yaml reruns identically), with an info line saying so; when it was given

@@ -77,7 +77,7 @@ def test_exit_codes(binary, scenario):
 
 
 def test_computed_substeps(binary, scenario, tmp):
-    """Without time.substeps, mrsim computes a stable power of two and records it."""
+    """Without time.substeps, mrsim computes the fewest stable steps and records them."""
     text = open(scenario).read()
     meshes = os.path.join(os.path.dirname(os.path.abspath(scenario)), "meshes") + "/"
     lines = [l.replace("meshes/", meshes) for l in text.splitlines()
@@ -88,9 +88,8 @@ def test_computed_substeps(binary, scenario, tmp):
     r = run(binary, "check", path)
     m = [l for l in r.stdout.splitlines() if l.strip().startswith("substeps:")]
     n = int(m[0].split(":")[1]) if m else 0
-    check(r.returncode == 0 and n > 0 and n & (n - 1) == 0,
-          "check fills in time.substeps with a power of two (%d)" % n)
-    check("time.substeps computed" in r.stderr, "and says so: " + r.stderr.strip()[-160:])
+    check(r.returncode == 0 and n > 0, "check fills in time.substeps (%d)" % n)
+    check("time.substeps computed: %d " % n in r.stderr, "and says so: " + r.stderr.strip()[-160:])
     out = os.path.join(tmp, "computed")
     r = run(binary, "run", path, "-o", out, "-q", "--set", "time.duration=0.2")
     check(r.returncode == 0, "a run without substeps is stable (exit %d)" % r.returncode)

@@ -28,7 +28,7 @@ using namespace mrsim::testing;
 
 namespace {
 
-constexpr int kChunks = 16;  // tip samples per display frame (64 steps apart)
+constexpr int kChunks = 16;  // tip samples per display frame (26 steps apart)
 
 struct Curves {
   std::vector<double> t, adaptive, uniform;
@@ -51,7 +51,9 @@ Curves run_both(const Scenario& input) {
   for (const LevelSpec& level : input.levels)
     meshes.push_back(read_tet_mesh(level.mesh, input.units));
   const std::vector<const TetMesh*> ptrs = {&meshes[0], &meshes[1], &meshes[2]};
-  const Scenario sc = with_stable_substeps(input, ptrs);  // as mrsim run computes them
+  Scenario sc = with_stable_substeps(input, ptrs);  // as mrsim run computes them,
+  // then whole sampling chunks per frame (the fewest steps that fit need not divide by 16).
+  sc.time.substeps = (sc.time.substeps + kChunks - 1) / kChunks * kChunks;
   const HierarchySetup setup = hierarchy_setup(sc, ptrs);
   HierarchicalSimulation sim(ptrs, setup);
   SpaceAdaptivity adapt(space_settings(sc), sim);
