@@ -195,7 +195,7 @@ class HierarchicalSimulation {
   void update_external(double t);
   void begin_frame(double duration);
   void run_steps(int steps);
-  void adapt_step(bool may_lengthen = true);
+  void adapt_step(bool may_lengthen = true, int parts = 1);
   void remap_skin();
   // Each surface load's targets with its force at the given factor per load.
   void visit_loads(const std::vector<double>& factors,

@@ -15,6 +15,7 @@
 #include "simulation/level_setup_from_scenario.hpp"
 #include "simulation/result_cache.hpp"
 #include "simulation/spectrum_cache.hpp"
+#include "time/steps_per_frame.hpp"
 
 namespace mrsim {
 
@@ -143,23 +144,17 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
 }
 
 long long computed_substeps(double frame_dt, double allowed, bool time_levels, int parts) {
-  long long n = 1;
   if (time_levels) {
     // The time levels halve the step (frame_dt / 2^k): a power of two, with two finer levels
     // than stability needs for the velocity-change rule (method.md §5.2).
+    long long n = 1;
     while (n <= kMaxSubsteps && frame_dt / n > allowed) n *= 2;
     return std::min<long long>(4 * n, kMaxSubsteps);
   }
   // One global step: the fewest steps that fit, so the step is the largest the estimate
-  // allows (a power of two took up to twice the steps needed: liver_probe 128 for 104), a
+  // allows (a power of two took up to twice the steps needed: liver_probe 128 for 103), a
   // multiple of the frame's split checks so that its parts are equal.
-  const double needed = std::ceil(frame_dt / allowed);
-  n = needed < static_cast<double>(kMaxSubsteps) ? std::max(1LL, static_cast<long long>(needed))
-                                                 : kMaxSubsteps;
-  while (n > 1 && frame_dt / (n - 1) <= allowed) --n;  // ceil's rounding, either way
-  while (n < kMaxSubsteps && frame_dt / n > allowed) ++n;
-  n = (n + parts - 1) / parts * parts;
-  return std::min<long long>(n, kMaxSubsteps / parts * parts);
+  return fewest_steps(frame_dt, allowed, parts, kMaxSubsteps);
 }
 
 Scenario with_stable_substeps(const Scenario& sc, const std::vector<const TetMesh*>& meshes,

@@ -15,12 +15,11 @@
 #include "mesh/tet_mesh.hpp"
 #include "physics/level_model.hpp"
 #include "scenario/scenario.hpp"
+#include "time/steps_per_frame.hpp"
 
 namespace mrsim {
 
 struct LevelLaws;  // simulation/level_setup_from_scenario.hpp
-
-inline constexpr int kMaxSubsteps = 1 << 30;
 
 /// Shortest edge of a mesh (m).
 double shortest_edge(const TetMesh& mesh);

@@ -14,6 +14,7 @@
 #include "simulation/hierarchical_simulation.hpp"
 #include "simulation/level_setup_from_scenario.hpp"
 #include "simulation/stable_step.hpp"
+#include "time/steps_per_frame.hpp"
 
 using namespace mrsim;
 
@@ -121,6 +122,30 @@ TEST(StableStep, ComputedSubstepsAreTheFewestThatFitOrAPowerOfTwoWithTimeLevels)
     EXPECT_LE(0.02 / n, allowed);
     EXPECT_GT(0.02 / (n - 1), allowed);
   }
+}
+
+// time.adapt_substeps: a frame whose step exceeds the estimate in force takes the fewest steps
+// that fit it with 5 % to spare (not the doublings of before, up to twice too many), and the
+// next frame keeps them while no fewer fit.
+TEST(StableStep, TooLongAStepBecomesTheFewestStepsThatFitWithSomeToSpare) {
+  const TetMesh mesh = mrsim::testing::beam_mesh(10);
+  Scenario sc = beam_scenario(1);
+  sc.time.substeps = 4;  // far longer than the cells allow
+  sc.time.adapt_substeps = true;
+  HierarchySetup setup = hierarchy_setup(sc, {&mesh});
+  ASSERT_TRUE(setup.adapt_step);
+  HierarchicalSimulation sim({&mesh}, setup);
+  const double allowed = sim.stable_step_in_force().dt;
+  const long long fit = fewest_steps(0.02, allowed / 1.05, 1, kMaxSubsteps);
+  sim.advance_frame();
+  EXPECT_EQ(sim.steps_per_frame(), fit);
+  EXPECT_EQ(sim.steps(), fit);
+  EXPECT_LE(0.02 / sim.steps_per_frame(), allowed / 1.05);
+  EXPECT_GT(0.02 / (sim.steps_per_frame() - 1), allowed / 1.05);
+  EXPECT_NE(sim.steps_per_frame() % 4, 0);  // not 4 × a power of two: 4 × 2^k overshoots
+  sim.advance_frame();  // the estimate in force barely moves: the same steps
+  EXPECT_EQ(sim.steps_per_frame(), fit);
+  EXPECT_EQ(sim.steps(), 2 * fit);
 }
 
 TEST(StableStep, DampingShortensTheComputedStepAndIsNamedAsTheCause) {
