@@ -243,6 +243,13 @@ def test_liver_press(binary, source, tmp):
           "the support pushes back while the 1 N load is on (max %.2f N)" % reaction[:, 2].max())
 
 
+# The process-control tests below act on a liver_probe run while it is still going. The bundled
+# run ends about 0.35 s after its start on a fast host without VTK frames (4x real time since
+# its substeps are the fewest stable ones, 103), faster than these tests can be sure to act:
+# they take ten times its steps, the same frames, so it lasts seconds.
+LONG_RUN = ("--set", "time.substeps=1030")
+
+
 def test_disk_full(binary, source, tmp):
     """Issue 18 defect 2: a log that cannot be written (files limited to 40 KiB, as on a full
     disk) is exit 1 with the reason, and summary.json says "failed"; HDF5's shutdown at exit
@@ -310,7 +317,7 @@ def test_one_run_per_folder(binary, source, tmp):
     import time
     out = os.path.join(tmp, "one_folder")
     first = subprocess.Popen([binary, "run", os.path.join(source, "scenarios", "liver_probe.yaml"),
-                              "-o", out, "-q", "--set", "output.vtk=false",
+                              "-o", out, "-q", "--set", "output.vtk=false", *LONG_RUN,
                               "--set", "time.duration=1.0"],
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     log = os.path.join(out, "log.h5")
@@ -359,8 +366,8 @@ def test_interruption(binary, source, tmp):
     for sig, code in ((signal.SIGINT, 130), (signal.SIGTERM, 143)):
         out = os.path.join(tmp, "interrupted_%d" % code)
         p = subprocess.Popen([binary, "run", os.path.join(source, "scenarios", "liver_probe.yaml"),
-                              "-o", out, "-q"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                             text=True)
+                              "-o", out, "-q", *LONG_RUN], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True)
         pvd = os.path.join(out, "frames.pvd")
         for _ in range(2000):
             if p.poll() is not None:
@@ -394,7 +401,7 @@ def test_folder_removed(binary, source, tmp):
     out = os.path.join(tmp, "removed")
     # Without VTK frames nothing else would notice: the log is written to an open file.
     p = subprocess.Popen([binary, "run", os.path.join(source, "scenarios", "liver_probe.yaml"),
-                          "-o", out, "-q", "--set", "output.vtk=false"],
+                          "-o", out, "-q", "--set", "output.vtk=false", *LONG_RUN],
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     for _ in range(2000):
         if p.poll() is not None or os.path.exists(os.path.join(out, "log.h5")):
@@ -417,7 +424,7 @@ def test_killed_runs_leave_complete_files(binary, source, tmp):
     for trial, delay in enumerate((0.4, 0.7, 0.9, 1.2, 1.5, 1.8, 2.2, 2.6)):
         out = os.path.join(tmp, "killed_%d" % trial)
         p = subprocess.Popen([binary, "run", os.path.join(source, "scenarios", "liver_probe.yaml"),
-                              "-o", out, "-q"], stdout=subprocess.DEVNULL,
+                              "-o", out, "-q", *LONG_RUN], stdout=subprocess.DEVNULL,
                              stderr=subprocess.DEVNULL)
         time.sleep(delay)
         p.send_signal(signal.SIGKILL)
