@@ -26,8 +26,9 @@ class VtkSeriesWriter {
   explicit VtkSeriesWriter(std::filesystem::path out_dir,
                            FrameCompression compression = FrameCompression::Lz4);
   ~VtkSeriesWriter();
-  VtkSeriesWriter(VtkSeriesWriter&&) noexcept;
-  VtkSeriesWriter& operator=(VtkSeriesWriter&&) noexcept;
+  // Not movable: the destructor removes the staging folder of this writer's series.
+  VtkSeriesWriter(const VtkSeriesWriter&) = delete;
+  VtkSeriesWriter& operator=(const VtkSeriesWriter&) = delete;
   /// Writes one frame (all levels, then the `surface` block when `surface` is given and the
   /// `tool` block when `tools` is not empty) and updates frames.pvd. Throws RunError on I/O
   /// failure, std::invalid_argument (before writing anything) on inconsistent sizes.
@@ -52,6 +53,7 @@ class VtkSeriesWriter {
   std::unique_ptr<LevelGrids> grids_;  // each level's grid, its cells built once
   std::unique_ptr<FrameCompressor> compressor_;  // compresses the blocks that changed
   std::string piece_buffer_;  // each piece's bytes, its capacity kept from piece to piece
+  bool staging_made_ = false;  // frames/.partial exists (made once, removed when done)
 };
 
 }  // namespace mrsim

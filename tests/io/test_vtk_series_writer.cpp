@@ -14,6 +14,8 @@
 #include <vtkXMLMultiBlockDataWriter.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <sys/stat.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <regex>
@@ -124,6 +126,31 @@ TEST(VtkSeriesWriter, WritesOneMultiblockPerFrameWithNamedLevelBlocks) {
                         kSampleTimes[f]);
     }
   }
+}
+
+// Frames are staged in frames/.partial, made once and empty between frames (no inode made and
+// removed per frame); a finished series leaves no staging folder and nothing under it.
+TEST(VtkSeriesWriter, StagesFramesInOneFolderThatTheFinishedSeriesRemoves) {
+  test::TempDir dir;
+  const auto staging = dir.path() / "frames" / ".partial";
+  {
+    VtkSeriesWriter writer(dir.path());
+    ino_t inode = 0;
+    for (int f = 0; f < 3; ++f) {
+      const auto levels = test::sample_frame(f);
+      writer.write_frame(f, kSampleTimes[f], test::views_of(levels));
+      ASSERT_TRUE(std::filesystem::is_directory(staging)) << "after frame " << f;
+      EXPECT_TRUE(std::filesystem::is_empty(staging)) << "after frame " << f;
+      struct stat st {};
+      ASSERT_EQ(::stat(staging.c_str(), &st), 0);
+      if (f > 0) {
+        EXPECT_EQ(st.st_ino, inode) << "frame " << f << " made the folder again";
+      }
+      inode = st.st_ino;
+    }
+  }
+  EXPECT_FALSE(std::filesystem::exists(staging));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "frames" / "frame_000001.vtm"));
 }
 
 // The writer keeps each block's grid from frame to frame (io/vtk_level_grid.hpp); a block whose
