@@ -176,9 +176,10 @@ void write_vtm(const std::filesystem::path& file, vtkMultiBlockDataSet* blocks,
 }  // namespace
 
 VtkSeriesWriter::~VtkSeriesWriter() {
-  // The staging folder is empty between frames; a run that ends (however) leaves none.
+  // The staging folder is empty between frames; a run that ends (however) leaves none. One
+  // holding a half-written frame (the run failed while writing it) is not empty and stays.
   std::error_code ec;
-  if (staging_made_) std::filesystem::remove(out_dir_ / kFramesDir / kPartialDir, ec);
+  std::filesystem::remove(out_dir_ / kFramesDir / kPartialDir, ec);
 }
 
 VtkSeriesWriter::VtkSeriesWriter(std::filesystem::path out_dir, FrameCompression compression)
@@ -211,22 +212,20 @@ void VtkSeriesWriter::write_frame(int frame_index, double time,
 // to its pieces hold) and moved under its final names once complete, pieces first, the .vtm
 // last: a run killed while writing leaves only frames/.partial behind, never a half-written
 // file under a final name (issue 18 defect 8; the next run into the folder removes frames/).
-// frames/.partial is made once and kept, empty, between frames: making and removing it every
-// frame cost two more inode changes a frame, and on ext4 without a journal each removed inode
-// slows the file creations of the next minutes (docs/performance.md).
+// frames/.partial is kept, empty, between frames (create_directories finds it there):
+// making and removing it every frame cost two more inode changes a frame, and on ext4 without
+// a journal each removed inode slows the file creations of the next minutes
+// (docs/performance.md).
 void VtkSeriesWriter::write_complete(const std::filesystem::path& relative,
                                      vtkMultiBlockDataSet* blocks) {
   namespace fs = std::filesystem;
   const fs::path frames = out_dir_ / kFramesDir, partial = frames / kPartialDir;
   const fs::path vtm = relative.filename(), pieces = fs::path(vtm).replace_extension();
   std::error_code ec;
-  if (!staging_made_) {
-    fs::create_directories(partial, ec);
-    if (ec)
-      throw RunError("cannot write " + (out_dir_ / relative).string() + ": cannot create " +
-                     partial.string() + ": " + ec.message());
-    staging_made_ = true;
-  }
+  fs::create_directories(partial, ec);
+  if (ec)
+    throw RunError("cannot write " + (out_dir_ / relative).string() + ": cannot create " +
+                   partial.string() + ": " + ec.message());
   compressor_->begin_frame();
   write_vtm(partial / vtm, blocks, compressor_->get(), piece_buffer_);
   if (fs::exists(partial / pieces, ec)) fs::rename(partial / pieces, frames / pieces, ec);
@@ -250,7 +249,6 @@ void VtkSeriesWriter::resume(std::span<const std::pair<int, double>> kept, int l
   const fs::path frames = out_dir_ / kFramesDir;
   std::error_code ec;
   fs::remove_all(frames / kPartialDir, ec);
-  staging_made_ = false;
   for (const fs::directory_entry& e : fs::directory_iterator(frames, ec)) {
     int index = -1;
     const std::string name = e.path().filename().string();

@@ -53,7 +53,6 @@ class VtkSeriesWriter {
   std::unique_ptr<LevelGrids> grids_;  // each level's grid, its cells built once
   std::unique_ptr<FrameCompressor> compressor_;  // compresses the blocks that changed
   std::string piece_buffer_;  // each piece's bytes, its capacity kept from piece to piece
-  bool staging_made_ = false;  // frames/.partial exists (made once, removed when done)
 };
 
 }  // namespace mrsim
