@@ -123,7 +123,12 @@ SpectralScale filter_spectrum_at(const LevelModel& m, double growth) {
 
 PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit, bool time_levels,
                         double growth, double damping_growth) {
-  p.damping *= 1.0 + std::max(0.0, damping_growth);
+  if (semi_implicit) {
+    p.damping *= 1.0 + std::max(0.0, damping_growth);
+  } else {
+    p.stiffness *= explicit_stiffening(growth);
+    p.damping *= explicit_damping_growth(damping_growth);
+  }
   if (time_levels) {
     if (semi_implicit) p.stiffness *= time_level_stiffening(growth);
     p.damping *= m.time_level_damping_scale;

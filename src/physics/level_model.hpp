@@ -99,7 +99,8 @@ inline bool is_held(const LevelModel& m, int i) { return !m.held.empty() && m.he
 /// Semi-implicit, the filtered scale follows it (filter_spectrum_at()) for one global step,
 /// and the proven stiffness bound grows by time_level_stiffening(g) with time levels.
 /// `damping_growth`: the point's own g_d, the largest among its tets (tangent_growths_of());
-/// the damping bound grows by 1 + g_d.
+/// the damping bound grows by 1 + g_d. Explicit, both grow by what the spectral margin does
+/// not cover (explicit_stiffening(), explicit_damping_growth(); 1 below g = 0.5, g_d = 0.22).
 PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit = false,
                         bool time_levels = false, double growth = 0.0,
                         double damping_growth = 0.0);

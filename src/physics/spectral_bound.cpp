@@ -196,6 +196,22 @@ double time_level_stiffening(double growth) {
   return 1.0 + kStiffeningPerGrowth * std::max(0.0, growth) / kSemiImplicitShare;
 }
 
+GrowthsNeeded explicit_growths_needed() {
+  return {kSpectralMargin - 1, std::sqrt(kSpectralMargin) - 1};
+}
+
+// Compared with the thresholds themselves, so that a growth reported as a bound below them
+// (tangent_growths_of()) gives the same factor, 1, as its exact value.
+double explicit_stiffening(double growth) {
+  const double covered = explicit_growths_needed().stiffness_above;
+  return growth <= covered ? 1.0 : (1.0 + growth) / kSpectralMargin;
+}
+
+double explicit_damping_growth(double damping_growth) {
+  const double covered = explicit_growths_needed().damping_above;
+  return damping_growth <= covered ? 1.0 : (1.0 + damping_growth) / std::sqrt(kSpectralMargin);
+}
+
 SpectralScale filter_scale(double filtered, double stiffness, double star_max, double stiffening) {
   SpectralScale out{filtered, star_max, 1.0};
   const double margin =

@@ -11,6 +11,7 @@
 
 #include "core/vec.hpp"
 #include "physics/point_adjacency.hpp"
+#include "physics/tangent_growth.hpp"
 
 namespace mrsim {
 
@@ -60,7 +61,7 @@ struct SpectralScale {
 SpectralScale spectral_scale(double eigenvalue, double star_max);
 
 /// What Green–Lagrange stiffening adds to the filtered spectrum, as a share of λ_max(M⁻¹K): the
-/// filter's blocks are probed at rest and do not follow the tangent stiffness, so its whole
+/// filter's blocks are taken at rest and do not follow the tangent stiffness, so its whole
 /// growth lands on the small λ_f. The set-up estimate assumes this share, and it is the floor
 /// of the one that follows the strain (below). It was 0.2 while it also had to cover deep
 /// indentations (volume_lambda_5e5 became unstable at λ_f + 0.14 λ_K of its finest level);
@@ -83,11 +84,28 @@ double filter_stiffening(double growth);
 
 /// Semi-implicit with time levels, the factor on a point's proven stiffness bound d at tangent
 /// growth g: the rule counts kSemiImplicitShare d at rest, and the growth adds up to g d that
-/// the filter's blocks, probed at rest, leave explicit; of it kStiffeningPerGrowth g d counts,
+/// the filter's blocks, taken at rest, leave explicit; of it kStiffeningPerGrowth g d counts,
 /// as for the global step: 1 + kStiffeningPerGrowth g / kSemiImplicitShare. Without it, two
 /// whole runs held at exactly courant × 1.00 (docs/stability_matrix.md). Explicit time levels
-/// need nothing: the proven bounds' slack covered g up to 1.2 (1.24–1.54 there).
+/// take only explicit_stiffening(): the proven bounds' slack covered g up to 1.2 (1.24–1.54).
 double time_level_stiffening(double growth);
+
+/// The explicit schemes, the factor on a point's stiffness bound at tangent growth g: the
+/// deformed tangent is below (1 + g) times the rest bound (physics/tangent_growth.hpp), and the
+/// estimate already stands for kSpectralMargin times the rest spectrum (one global step; the
+/// proven bounds of time levels are looser still), so only what the margin does not cover
+/// counts: max(1, (1 + g) / kSpectralMargin). Below g = 0.5 nothing changes (the bundled
+/// scenarios' runs keep their steps); a soft Green–Lagrange beam hanging under gravity
+/// (E = 15 kPa, ρ = 3 100 kg/m³) reached g ≈ 8 and diverged at its computed step without it.
+double explicit_stiffening(double growth);
+
+/// The same for the damping bound at damping growth g_d (1 + g_d, proven): the combined
+/// limit's margin is √kSpectralMargin on the damping, so max(1, (1 + g_d) / √kSpectralMargin).
+double explicit_damping_growth(double damping_growth);
+
+/// The growths below which both factors above are 1: what tangent_growths_of() must give
+/// exactly for the explicit schemes (kSpectralMargin − 1 and √kSpectralMargin − 1).
+GrowthsNeeded explicit_growths_needed();
 
 /// The semi-implicit scale of a level's stiffness bounds: its largest point bound then stands
 /// for λ_f + max((kSpectralMargin − 1)|λ_f|, stiffening λ_K), with λ_f =

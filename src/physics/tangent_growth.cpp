@@ -2,6 +2,8 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace mrsim {
 
@@ -12,12 +14,25 @@ struct StrainTop {
   double e_max, trace;
 };
 
-StrainTop strain_top(const Mat3& grad_u) {
+Mat3 green_strain(const Mat3& grad_u) {
   const Mat3 F = Mat3::Identity() + grad_u;
-  const Mat3 E = 0.5 * (F.transpose() * F - Mat3::Identity());
+  return 0.5 * (F.transpose() * F - Mat3::Identity());
+}
+
+StrainTop strain_top_of(const Mat3& E) {
   Eigen::SelfAdjointEigenSolver<Mat3> es;
   es.computeDirect(E, Eigen::EigenvaluesOnly);
   return {es.eigenvalues()(2), E.trace()};
+}
+
+StrainTop strain_top(const Mat3& grad_u) { return strain_top_of(green_strain(grad_u)); }
+
+// Gershgorin: every eigenvalue of E is below some E_ii + Σ_{j≠i} |E_ij|.
+StrainTop strain_bound_of(const Mat3& E) {
+  double top = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i)
+    top = std::max(top, E(i, i) + std::abs(E(i, (i + 1) % 3)) + std::abs(E(i, (i + 2) % 3)));
+  return {top, E.trace()};
 }
 
 double growth_of(const StrainTop& e, const MaterialLaw& law, const StiffnessScales& s) {
@@ -46,13 +61,19 @@ double largest_tangent_growth(const TetGeometry& geo, std::span<const int> tets,
 
 double tangent_growths_of(const TetGeometry& geo, std::span<const int> tets,
                           const std::vector<Vec3>& u, const MaterialLaw& law,
-                          std::vector<double>& stiffness, std::vector<double>& damping) {
+                          std::vector<double>& stiffness, std::vector<double>& damping,
+                          GrowthsNeeded needed) {
   for (const int t : tets)
     for (const int a : geo.tets[t]) stiffness[a] = damping[a] = 0.0;
   double top = 0;
   for (const int t : tets) {
-    const StrainTop e = strain_top(tet_gradient(geo.grad[t], geo.tets[t], u.data()));
-    const double g = growth_of(e, law, geo.scales_of(t, law.scales));
+    const Mat3 E = green_strain(tet_gradient(geo.grad[t], geo.tets[t], u.data()));
+    const StiffnessScales& scales = geo.scales_of(t, law.scales);
+    // g and g_d grow with e_max: a bound on it bounds both, and below the thresholds suffices.
+    StrainTop e = strain_bound_of(E);
+    if (growth_of(e, law, scales) > needed.stiffness_above || 2 * e.e_max > needed.damping_above)
+      e = strain_top_of(E);
+    const double g = growth_of(e, law, scales);
     top = std::max(top, g);
     const double g_d = std::max(0.0, 2 * e.e_max);
     for (const int a : geo.tets[t]) {

@@ -38,11 +38,21 @@ double largest_tangent_growth(const TetGeometry& geo, std::span<const int> tets,
 /// g_d of one tet: how far its damping tangent has grown, 2 e_max clamped at 0.
 double damping_growth(const Mat3& grad_u);
 
+/// Growths that need not be exact: a tet whose g and g_d are provably at most these (a
+/// Gershgorin bound on e_max, a few flops) reports that bound instead of solving for e_max.
+/// The explicit schemes count none at or below (kSpectralMargin − 1, √kSpectralMargin − 1)
+/// (physics/spectral_bound.hpp explicit_stiffening()); {0, 0}: always exact.
+struct GrowthsNeeded {
+  double stiffness_above = 0, damping_above = 0;
+};
+
 /// The largest g over `tets` (largest_tangent_growth()), and per point of those tets the
 /// largest g and the largest g_d among the listed tets it belongs to, into stiffness[point] and
-/// damping[point] (only those points are written; one entry per point of the level).
+/// damping[point] (only those points are written; one entry per point of the level). With
+/// `needed`, values at or below its thresholds may be upper bounds (above them, exact).
 double tangent_growths_of(const TetGeometry& geo, std::span<const int> tets,
                           const std::vector<Vec3>& u, const MaterialLaw& law,
-                          std::vector<double>& stiffness, std::vector<double>& damping);
+                          std::vector<double>& stiffness, std::vector<double>& damping,
+                          GrowthsNeeded needed = {});
 
 }  // namespace mrsim

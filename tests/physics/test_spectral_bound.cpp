@@ -91,6 +91,33 @@ TEST(SpectralBound, FilterSpectrumFollowsTheGrowthOfAStiffeningLawOnly) {
               1e-9 * lambda_k);
 }
 
+TEST(SpectralBound, ExplicitBoundsGrowBeyondWhatTheMarginCovers) {
+  // One global explicit step stands for kSpectralMargin times the rest spectrum; the deformed
+  // tangent is below (1 + g) times the rest bound (physics/tangent_growth.hpp), the damping's
+  // below 1 + g_d, with a margin of √kSpectralMargin on it. Below that nothing moves.
+  const GrowthsNeeded covered = explicit_growths_needed();
+  EXPECT_DOUBLE_EQ(covered.stiffness_above, kSpectralMargin - 1);
+  EXPECT_DOUBLE_EQ(covered.damping_above, std::sqrt(kSpectralMargin) - 1);
+  for (const double g : {0.0, 0.3, covered.stiffness_above}) EXPECT_EQ(explicit_stiffening(g), 1.0);
+  for (const double g : {0.0, 0.2, covered.damping_above}) EXPECT_EQ(explicit_damping_growth(g), 1.0);
+  EXPECT_DOUBLE_EQ(explicit_stiffening(2.0), 3.0 / kSpectralMargin);
+  EXPECT_DOUBLE_EQ(explicit_damping_growth(1.0), 2.0 / std::sqrt(kSpectralMargin));
+  MaterialLaw law = law_with(5e4, 1e4, 0, 5);
+  law.strain = StrainMeasure::GreenLagrange;
+  const LevelModel m = build_level_model(jittered_box(3, 2, 2, 0.2, 2), law);
+  const PointInertia rest = calibrated(m.star[0], m, false, false);
+  for (const bool time_levels : {false, true}) {
+    const PointInertia at_rest = calibrated(m.star[0], m, false, time_levels);
+    const PointInertia grown = calibrated(m.star[0], m, false, time_levels, 8.0, 3.0);
+    EXPECT_DOUBLE_EQ(grown.stiffness, at_rest.stiffness * 9.0 / kSpectralMargin);
+    EXPECT_DOUBLE_EQ(grown.damping, at_rest.damping * 4.0 / std::sqrt(kSpectralMargin));
+    const PointInertia small = calibrated(m.star[0], m, false, time_levels, 0.4, 0.2);
+    EXPECT_EQ(small.stiffness, at_rest.stiffness);
+    EXPECT_EQ(small.damping, at_rest.damping);
+  }
+  EXPECT_GT(rest.damping, 0.0);
+}
+
 TEST(SpectralBound, EmptyAndZeroOperatorsGiveZero) {
   const LevelModel m = build_level_model(jittered_box(2, 2, 2, 0.1, 1), law_with(5e4, 1e4));
   EXPECT_TRUE(m.D.empty());

@@ -237,3 +237,42 @@ TEST(TangentGrowth, PointsTakeTheLargestGrowthsOfTheirListedTets) {
             std::count(expected.begin(), expected.end(), -1.0));
   EXPECT_GT(std::count(damping.begin(), damping.end(), -1.0), 0);  // unlisted points untouched
 }
+
+TEST(TangentGrowth, GrowthsBelowWhatIsNeededMayBeBoundsAndAboveItAreExact) {
+  // The explicit schemes count no growth below their spectral margin's (physics/
+  // spectral_bound.hpp explicit_growths_needed()): there a Gershgorin bound on e_max replaces
+  // the eigenvalue solve. What is reported must bound the exact growth and, wherever either
+  // could matter, be it.
+  const MaterialLaw law = green(5e4, 1e4);
+  const TetMesh mesh = jittered_box(3, 2, 2, 0.2, 8);
+  const LevelModel m = build_level_model(mesh, law);
+  const int n = m.num_points();
+  const GrowthsNeeded needed{0.5, 0.2247};
+  std::mt19937 rng(11);
+  int bounded = 0, exact_above = 0;
+  for (const double scale : {1e-4, 3e-3, 1e-2, 3e-2}) {
+    std::normal_distribution<double> d(0, scale);
+    std::vector<Vec3> u(n);
+    for (Vec3& x : u) x = Vec3(d(rng), d(rng), d(rng));
+    for (int t = 0; t < m.num_tets(); ++t) {
+      const std::array<int, 1> one{t};
+      std::vector<double> g(n), g_d(n), exact(n), exact_d(n);
+      tangent_growths_of(m.geo, one, u, law, g, g_d, needed);
+      tangent_growths_of(m.geo, one, u, law, exact, exact_d);
+      const int a = m.geo.tets[t][0];
+      const bool same = g[a] == exact[a] && g_d[a] == exact_d[a];
+      if (exact[a] > needed.stiffness_above || exact_d[a] > needed.damping_above) {
+        EXPECT_TRUE(same) << "tet " << t << ": " << g[a] << " / " << exact[a];
+        ++exact_above;
+      } else {
+        EXPECT_GE(g[a], exact[a]) << "tet " << t;
+        EXPECT_GE(g_d[a], exact_d[a]) << "tet " << t;
+        EXPECT_LE(g[a], needed.stiffness_above) << "tet " << t;
+        EXPECT_LE(g_d[a], needed.damping_above) << "tet " << t;
+        bounded += !same;
+      }
+    }
+  }
+  EXPECT_GT(bounded, 0);      // the bound was used
+  EXPECT_GT(exact_above, 0);  // and large growths were met
+}

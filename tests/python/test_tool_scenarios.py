@@ -408,13 +408,13 @@ def test_little_man(binary, source, tmp):
           "%d zero crossings in %.2f s" % (np.abs(swing).max() * 1e3, crossings, t[-1] - 1.45))
     check(np.abs(tips).max() > 2e-3, "the arms move by more than 2 mm while shaken (%.1f mm)"
           % (np.abs(tips).max() * 1e3))
-    stated = ("18.3", "17.7", 5, "2.22", "2.01")  # README's Fig. 5.10 row
+    stated = ("18.2", "17.3", 5, "2.22", "2.01")  # README's Fig. 5.10 row
     measured = ("%.1f" % (np.abs(tips).max() * 1e3), "%.1f" % (np.abs(swing).max() * 1e3),
                 crossings, "%.2f" % -f0[:, 1].min(), "%.2f" % f1[:, 1].max())
     check(measured == stated, "little_man_shake: README says arms up to %s mm, %s mm after "
           "release, %d crossings, %s and %s N; the run gives %s" % (stated + (measured,)))
-    check(round(100 * finest_share) == 78, "little_man_shake: %.1f %% of the finest points active "
-          "on average (README: 78 %%)" % (100 * finest_share))
+    check(round(100 * finest_share) == 77, "little_man_shake: %.1f %% of the finest points active "
+          "on average (README: 77 %%)" % (100 * finest_share))
     check(crossings >= 2 and np.abs(swing).max() > 2e-4,
           "the arms keep oscillating after the tools let go")
 
