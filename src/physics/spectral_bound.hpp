@@ -66,10 +66,16 @@ SpectralScale spectral_scale(double eigenvalue, double star_max);
 /// of the one that follows the strain (below). It was 0.2 while it also had to cover deep
 /// indentations (volume_lambda_5e5 became unstable at λ_f + 0.14 λ_K of its finest level);
 /// since the share follows g those are covered by kStiffeningPerGrowth, and what needs the
-/// floor is the adaptive beam: without it its whole run was 0.94 (optimistic), with 0.1 1.35.
+/// floor was the adaptive beam: without it its whole run was 0.94 (optimistic), with 0.1 1.35.
 /// At 0.2 the thesis-sized liver's estimate was 2.6–3 times below its true limit, the floor
-/// being 77 % of its finest level's share (docs/stability_matrix.md, 2026-11-28).
-inline constexpr double kFilterStiffening = 0.1;
+/// being 77 % of its finest level's share (docs/stability_matrix.md, 2026-11-28). What the
+/// adaptive beam needed was the thesis' finite probe of the filter's blocks (its error is not
+/// counted by λ_f): with the blocks K_ii (time/semi_implicit_filter.hpp) its true limit went
+/// from 62 to 36 substeps and 0.1 made it 2.70 times cautious. 0.05 since 2026-12-03 (1.74; all
+/// 18 bundled semi-implicit whole runs without time levels 1.16–2.39, none below 1; with no floor
+/// at all 1.68, the nine others measured alike), kept for what a floor still covers: the blocks do not rotate
+/// with the body.
+inline constexpr double kFilterStiffening = 0.05;
 
 /// During a run the share follows the level's largest tangent growth g (physics/
 /// tangent_growth.hpp): max(kFilterStiffening, kStiffeningPerGrowth × g). Measured on the
