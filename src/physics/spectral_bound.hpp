@@ -72,9 +72,9 @@ SpectralScale spectral_scale(double eigenvalue, double star_max);
 /// adaptive beam needed was the thesis' finite probe of the filter's blocks (its error is not
 /// counted by λ_f): with the blocks K_ii (time/semi_implicit_filter.hpp) its true limit went
 /// from 62 to 36 substeps and 0.1 made it 2.70 times cautious. 0.05 since 2026-12-03 (1.74; all
-/// 18 bundled semi-implicit whole runs without time levels 1.16–2.39, none below 1; with no floor
-/// at all 1.68, the nine others measured alike), kept for what a floor still covers: the blocks do not rotate
-/// with the body.
+/// 18 bundled semi-implicit whole runs without time levels 1.16–2.39, none below 1; with no
+/// floor at all 1.68, the nine others measured alike), kept for what a floor still covers: the
+/// blocks do not rotate with the body.
 inline constexpr double kFilterStiffening = 0.05;
 
 /// During a run the share follows the level's largest tangent growth g (physics/
