@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "physics/lumped_mass.hpp"
+#include "physics/patch_spectrum.hpp"
 
 namespace mrsim {
 
@@ -34,7 +35,7 @@ void edge_lengths(LevelModel& m) {
 // undamped step can be the smallest at a scale between: the bisection takes its minima over
 // them alone, the same values. O(points) twice, then O(those points) per trial.
 double combined_damping_scale(const LevelModel& m, bool semi, double target,
-                              double stiffness_scale) {
+                              double stiffness_scale, const std::vector<double>& point_scale = {}) {
   const double own = m.damping_spectrum.scale;
   if (!std::isfinite(target)) return own;
   std::vector<PointInertia> points;  // free points, their stiffness scaled
@@ -42,7 +43,7 @@ double combined_damping_scale(const LevelModel& m, bool semi, double target,
   for (int i = 0; i < m.num_points(); ++i)
     if (!is_held(m, i)) {
       points.push_back(m.star[i]);
-      points.back().stiffness *= stiffness_scale;
+      points.back().stiffness *= stiffness_scale * (point_scale.empty() ? 1.0 : point_scale[i]);
     }
   auto step = [&](PointInertia p, double damping_scale) {
     p.damping *= damping_scale;
@@ -113,6 +114,28 @@ void apply_spectra(LevelModel& m, bool semi_implicit, const LevelSpectra& s) {
 
 }  // namespace
 
+void prepare_semi_implicit_time_levels(LevelModel& m) {
+  if (!m.time_level_share.empty() || m.num_points() == 0) return;
+  if (m.K.empty()) throw std::logic_error("prepare_semi_implicit_time_levels: no edge matrices");
+  m.time_level_share = time_level_filter_shares(
+      m.adj, patch_filtered_eigenvalues(m.adj, m.K, spectral_masses(m)), m.star);
+  raise_to_level_share(m.time_level_share, m.filter_spectrum.eigenvalue,
+                       m.stiffness_spectrum.star_max);
+  if (!m.law.damped()) return;
+  // The damping scale of time levels against the stiffness they now count.
+  std::vector<double> factor = m.time_level_share;
+  for (double& f : factor) f /= kSemiImplicitShare;
+  m.time_level_damping_scale = combined_damping_scale(
+      m, true, m.combined_limit / std::sqrt(kSpectralMargin), 1.0, factor);
+}
+
+double time_level_share(const LevelModel& m, int point) {
+  if (point < 0) return kSemiImplicitShare;
+  if (m.time_level_share.empty())
+    throw std::logic_error("time_level_share: prepare_semi_implicit_time_levels() not called");
+  return m.time_level_share[point];
+}
+
 bool stiffens(const LevelModel& m) { return m.law.strain == StrainMeasure::GreenLagrange; }
 
 SpectralScale filter_spectrum_at(const LevelModel& m, double growth) {
@@ -122,7 +145,7 @@ SpectralScale filter_spectrum_at(const LevelModel& m, double growth) {
 }
 
 PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit, bool time_levels,
-                        double growth, double damping_growth) {
+                        double growth, double damping_growth, int point) {
   if (semi_implicit) {
     p.damping *= 1.0 + std::max(0.0, damping_growth);
   } else {
@@ -130,7 +153,7 @@ PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit,
     p.damping *= explicit_damping_growth(damping_growth);
   }
   if (time_levels) {
-    if (semi_implicit) p.stiffness *= time_level_stiffening(growth);
+    if (semi_implicit) p.stiffness *= time_level_stiffening(growth, time_level_share(m, point));
     p.damping *= m.time_level_damping_scale;
     return p;
   }

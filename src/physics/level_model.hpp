@@ -58,6 +58,9 @@ struct LevelModel {
   // combined_step_limit() of the level (infinite when undamped): the one measurement of
   // level_spectra() its scales do not hold.
   double combined_limit = std::numeric_limits<double>::infinity();
+  // Semi-implicit time levels: each point's share of its proven stiffness bound
+  // (physics/patch_spectrum.hpp, prepare_semi_implicit_time_levels()); empty otherwise.
+  std::vector<double> time_level_share;
 
   int num_points() const { return adj.num_points(); }
   int num_tets() const { return static_cast<int>(geo.tets.size()); }
@@ -101,9 +104,22 @@ inline bool is_held(const LevelModel& m, int i) { return !m.held.empty() && m.he
 /// `damping_growth`: the point's own g_d, the largest among its tets (tangent_growths_of());
 /// the damping bound grows by 1 + g_d. Explicit, both grow by what the spectral margin does
 /// not cover (explicit_stiffening(), explicit_damping_growth(); 1 below g = 0.5, g_d = 0.22).
+/// `point`: the point's index on the level, whose share semi-implicit time levels count
+/// (time_level_share(); -1: the thesis' quarter, for a bound that is no single point's).
 PointInertia calibrated(PointInertia p, const LevelModel& m, bool semi_implicit = false,
                         bool time_levels = false, double growth = 0.0,
-                        double damping_growth = 0.0);
+                        double damping_growth = 0.0, int point = -1);
+
+/// A semi-implicit level stepped on time levels: each point's share of its proven stiffness
+/// bound (physics/patch_spectrum.hpp: its patches' filtered spectrum, at least the level's),
+/// and the time levels' damping scale against it. A dense eigenproblem per point (about
+/// 20–70 µs), so only where time levels run; a second call does nothing.
+void prepare_semi_implicit_time_levels(LevelModel& m);
+
+/// The share of point `point`'s proven stiffness bound counted with semi-implicit time levels;
+/// the thesis' kSemiImplicitShare for point -1 (a bound that is no point's). Throws if the
+/// level was not prepared.
+double time_level_share(const LevelModel& m, int point);
 
 /// Does the level's tangent stiffness grow with strain (Green–Lagrange)?
 bool stiffens(const LevelModel& m);

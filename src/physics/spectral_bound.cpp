@@ -192,8 +192,8 @@ double filter_stiffening(double growth) {
   return std::max(kFilterStiffening, kStiffeningPerGrowth * growth);
 }
 
-double time_level_stiffening(double growth) {
-  return 1.0 + kStiffeningPerGrowth * std::max(0.0, growth) / kSemiImplicitShare;
+double time_level_stiffening(double growth, double share) {
+  return (share + kStiffeningPerGrowth * std::max(0.0, growth)) / kSemiImplicitShare;
 }
 
 GrowthsNeeded explicit_growths_needed() {

@@ -11,6 +11,7 @@
 
 #include "core/vec.hpp"
 #include "physics/point_adjacency.hpp"
+#include "physics/stable_step_bound.hpp"
 #include "physics/tangent_growth.hpp"
 
 namespace mrsim {
@@ -89,12 +90,14 @@ inline constexpr double kStiffeningPerGrowth = 0.3;
 double filter_stiffening(double growth);
 
 /// Semi-implicit with time levels, the factor on a point's proven stiffness bound d at tangent
-/// growth g: the rule counts kSemiImplicitShare d at rest, and the growth adds up to g d that
-/// the filter's blocks, taken at rest, leave explicit; of it kStiffeningPerGrowth g d counts,
-/// as for the global step: 1 + kStiffeningPerGrowth g / kSemiImplicitShare. Without it, two
-/// whole runs held at exactly courant × 1.00 (docs/stability_matrix.md). Explicit time levels
-/// take only explicit_stiffening(): the proven bounds' slack covered g up to 1.2 (1.24–1.54).
-double time_level_stiffening(double growth);
+/// growth g, for stable_step_of() (which counts kSemiImplicitShare d): the point counts its
+/// `share` of d at rest (physics/patch_spectrum.hpp; the thesis' quarter until 2026-12-03), and
+/// the growth adds up to g d that the filter's blocks, taken at rest, leave explicit; of it
+/// kStiffeningPerGrowth g d counts, as for the global step: (share + kStiffeningPerGrowth g) /
+/// kSemiImplicitShare. Without the growth, two whole runs held at exactly courant × 1.00
+/// (docs/stability_matrix.md). Explicit time levels take only explicit_stiffening(): the proven
+/// bounds' slack covered g up to 1.2 (1.24–1.54).
+double time_level_stiffening(double growth, double share = kSemiImplicitShare);
 
 /// The explicit schemes, the factor on a point's stiffness bound at tangent growth g: the
 /// deformed tangent is below (1 + g) times the rest bound (physics/tangent_growth.hpp), and the

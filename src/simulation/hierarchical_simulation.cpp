@@ -48,6 +48,8 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
     else
       models_.push_back(std::make_unique<LevelModel>(
           build_level_model(*meshes[l], law, is_semi_implicit(setup.integrator), held)));
+    if (setup.time_levels && is_semi_implicit(setup.integrator))
+      prepare_semi_implicit_time_levels(*models_[l]);
     levels.push_back({meshes[l], &models_[l]->adj});
   }
   // The links and the skin binding are the hierarchy's geometry: kept between runs.
@@ -603,7 +605,7 @@ void HierarchicalSimulation::update_stable_steps() {
     for (int p : lists_->active(l))
       loaded_[l][p] = calibrated(inertia_[l][p], *models_[l], semi_implicit_, !global_step_,
                                  tracks_stiffening_ ? stiffness_growth_[l][p] : 0.0,
-                                 tracks_stiffening_ ? damping_growth_[l][p] : 0.0);
+                                 tracks_stiffening_ ? damping_growth_[l][p] : 0.0, p);
   if (contact_) {
     near_.clear();
     for (const std::vector<int>& c : contact_->candidates())

@@ -94,6 +94,8 @@ std::vector<LevelModel> level_models(const Scenario& sc, const std::vector<const
     bool hit = false;
     models.push_back(cached_level_model(*meshes[l], laws.laws[l],
                                         is_semi_implicit(sc.time.integrator), laws.held[l], &hit));
+    if (sc.time_levels.enabled && is_semi_implicit(sc.time.integrator))
+      prepare_semi_implicit_time_levels(models.back());
     reused += hit;
   }
   if (reused > 0)
@@ -115,14 +117,16 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
                                    : static_cast<int>(meshes.size()) - 1;
   std::vector<LevelModel> own_models;
   if (!built)
-    for (int l = 0; l <= last; ++l)
+    for (int l = 0; l <= last; ++l) {
       own_models.push_back(cached_level_model(*meshes[l], laws->laws[l], semi, laws->held[l]));
+      if (semi && sc.time_levels.enabled) prepare_semi_implicit_time_levels(own_models.back());
+    }
   const std::vector<LevelModel>& models = built ? *built : own_models;
   std::vector<std::vector<PointInertia>> star;
   for (int l = 0; l <= last; ++l) star.push_back(models[l].star);
   auto own = [&](int l, int p) {  // without contact
     const PointInertia& s = models[l].star[p];
-    return calibrated(s, models[l], semi, sc.time_levels.enabled);
+    return calibrated(s, models[l], semi, sc.time_levels.enabled, 0.0, 0.0, p);
   };
   // One global step: calibrated by the level's spectrum; time levels: proven stiffness bounds,
   // calibrated damping.

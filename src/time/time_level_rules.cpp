@@ -13,7 +13,7 @@ std::vector<std::int8_t> courant_levels(const LevelModel& model, const TimeLevel
   std::vector<std::int8_t> level(model.num_points(), 0);
   for (int i = 0; i < model.num_points(); ++i)
     level[i] = static_cast<std::int8_t>(stable_time_level(
-        rules, stable_step_of(calibrated(model.star[i], model, rules.semi_implicit, true),
+        rules, stable_step_of(calibrated(model.star[i], model, rules.semi_implicit, true, 0.0, 0.0, i),
                               rules.semi_implicit)));
   return level;
 }

@@ -85,7 +85,7 @@ std::vector<double> energies(HierarchicalSimulation& sim, int frames) {
 TEST(TimeLevels, OneLevelIsExactlyTheGlobalStep) {
   const TetMesh mesh = testing::beam_mesh(20);  // Courant level 9 at 0.02 s frames
   for (Integrator integ : {Integrator::ModifiedEuler, Integrator::SemiImplicit}) {
-    const int level = is_semi_implicit(integ) ? 8 : 9;
+    const int level = is_semi_implicit(integ) ? 7 : 9;
     HierarchicalSimulation global({&mesh}, global_step(clamped(mesh, integ), 1 << level));
     HierarchicalSimulation adaptive({&mesh}, time_levels(clamped(mesh, integ), level));
     for (int f = 0; f < 5; ++f) {
@@ -316,7 +316,12 @@ TEST(TimeLevels, FreeBodyKeepsItsMomentumUnderTheMomentumRestoringSemiImplicitSt
   s.gravity.setZero();
   s.initial_velocity = Vec3(0.3, -0.2, 0.1);
   s.initial_angular_velocity = Vec3(0, 0, 2.0);
-  HierarchicalSimulation sim({&mesh}, time_levels(s, 10));
+  // At half the estimate: the particles on levels 8 and 10, where the kicks' asynchrony leaves
+  // 1.6e-5 of L (at the estimate, levels 7 and 9 since the shares of physics/patch_spectrum.hpp,
+  // 6e-5).
+  HierarchySetup levels = time_levels(s, 10);
+  levels.time_levels->courant = 0.5;
+  HierarchicalSimulation sim({&mesh}, levels);
   ASSERT_GT(sim.time_levels()->particles_per_level()[8], 0);
   ASSERT_GT(sim.time_levels()->particles_per_level()[10], 0);
   auto momenta = [&] {
@@ -390,9 +395,11 @@ TEST(TimeLevels, SemiImplicitStepsFollowGreenLagrangeStiffening) {
     int checked = 0, below_top = 0;
     for (int p = 0; p < m.num_points(); ++p) {
       if (!sim.state(0).free_point[p]) continue;
-      const double expected = 1 / std::sqrt(is_semi_implicit(integ)
-                                                 ? time_level_stiffening(g_p[p])
-                                                 : explicit_stiffening(g_p[p]));
+      const double share = m.time_level_share.empty() ? 0.0 : m.time_level_share[p];
+      const double expected =
+          1 / std::sqrt(is_semi_implicit(integ) ? time_level_stiffening(g_p[p], share) /
+                                                      time_level_stiffening(0.0, share)
+                                                : explicit_stiffening(g_p[p]));
       EXPECT_NEAR(sim.stable_steps(0)[p] / rest[p], expected, 1e-9) << p;
       below_top += g_p[p] < 0.5 * g;
       ++checked;
@@ -424,8 +431,10 @@ TEST(TimeLevels, SemiImplicitDampingFollowsTheStrainAtEachPoint) {
     for (int p = 0; p < m.num_points(); ++p) {
       if (!sim.state(0).free_point[p]) continue;
       const PointInertia& in = sim.inertia(0)[p];
-      const double with = stable_step_of(calibrated(in, m, true, levels, g_p[p], g_d[p]), true);
-      const double without = stable_step_of(calibrated(in, m, true, levels, g_p[p], 0.0), true);
+      const double with =
+          stable_step_of(calibrated(in, m, true, levels, g_p[p], g_d[p], p), true);
+      const double without =
+          stable_step_of(calibrated(in, m, true, levels, g_p[p], 0.0, p), true);
       EXPECT_NEAR(sim.stable_steps(0)[p], with, 1e-12 * with) << p;
       if (with < 0.99 * without) ++shorter;
       ++checked;
