@@ -11,25 +11,29 @@ namespace mrsim {
 
 namespace {
 
+// A point that moves: a finite positive mass (a held point's is infinite).
+bool free_mass(double m) { return std::isfinite(m) && m > 0; }
+
 // The filtered operator on the patch `points` (mass-scaled), dense: (A u)_a = Σ_j A_aj (u_j +
-// u_a) over every neighbour j of a, those outside the patch held at zero.
+// u_a) over every neighbour j of a, those outside the patch held at zero. `slot`: -1 for every
+// point on entry and on return; the patch's local index meanwhile.
 double patch_eigenvalue(const PointAdjacency& adj, const std::vector<Mat3>& edge,
                         const std::vector<double>& mass, const std::vector<int>& points,
-                        Eigen::MatrixXd& a) {
+                        std::vector<int>& slot, Eigen::MatrixXd& a) {
   const int k = static_cast<int>(points.size());
+  for (int r = 0; r < k; ++r) slot[points[r]] = r;
   a.setZero(3 * k, 3 * k);
   for (int r = 0; r < k; ++r) {
     const int p = points[r];
     Mat3 own = Mat3::Zero();
     for (int e = adj.nbr_start[p]; e < adj.nbr_start[p + 1]; ++e) {
       own += edge[e];
-      const auto it = std::find(points.begin(), points.end(), adj.nbr[e]);
-      if (it != points.end())
-        a.block<3, 3>(3 * r, 3 * (it - points.begin())) =
-            edge[e] / std::sqrt(mass[p] * mass[adj.nbr[e]]);
+      const int c = slot[adj.nbr[e]];
+      if (c >= 0) a.block<3, 3>(3 * r, 3 * c) = edge[e] / std::sqrt(mass[p] * mass[adj.nbr[e]]);
     }
     a.block<3, 3>(3 * r, 3 * r) = own / mass[p];
   }
+  for (const int q : points) slot[q] = -1;
   const Eigen::MatrixXd sym = 0.5 * (a + a.transpose());
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(sym, Eigen::EigenvaluesOnly);
   return es.eigenvalues()[3 * k - 1];
@@ -42,14 +46,14 @@ std::vector<double> patch_filtered_eigenvalues(const PointAdjacency& adj,
                                                const std::vector<double>& mass) {
   const int n = adj.num_points();
   std::vector<double> out(n, -std::numeric_limits<double>::infinity());
-  std::vector<int> points;
+  std::vector<int> points, slot(n, -1);
   Eigen::MatrixXd a;
   for (int i = 0; i < n; ++i) {
-    if (!std::isfinite(mass[i]) || !(mass[i] > 0)) continue;
+    if (!free_mass(mass[i])) continue;
     points.assign(1, i);
     for (int e = adj.nbr_start[i]; e < adj.nbr_start[i + 1]; ++e)
-      if (std::isfinite(mass[adj.nbr[e]]) && mass[adj.nbr[e]] > 0) points.push_back(adj.nbr[e]);
-    out[i] = patch_eigenvalue(adj, edge, mass, points, a);
+      if (free_mass(mass[adj.nbr[e]])) points.push_back(adj.nbr[e]);
+    out[i] = patch_eigenvalue(adj, edge, mass, points, slot, a);
   }
   return out;
 }

@@ -85,6 +85,20 @@ double shortest_edge(const TetMesh& mesh) {
   return std::sqrt(h2);
 }
 
+namespace {
+
+// Level l's model for the scenario's integrator, from the spectrum cache when it has it, and
+// prepared for semi-implicit time levels when the scenario runs them.
+LevelModel scenario_level_model(const Scenario& sc, const TetMesh& mesh, const LevelLaws& laws,
+                                int l, bool* reused = nullptr) {
+  const bool semi = is_semi_implicit(sc.time.integrator);
+  LevelModel m = cached_level_model(mesh, laws.laws[l], semi, laws.held[l], reused);
+  if (semi && sc.time_levels.enabled) prepare_semi_implicit_time_levels(m);
+  return m;
+}
+
+}  // namespace
+
 std::vector<LevelModel> level_models(const Scenario& sc, const std::vector<const TetMesh*>& meshes,
                                      const LevelLaws& laws) {
   std::vector<LevelModel> models;
@@ -92,10 +106,7 @@ std::vector<LevelModel> level_models(const Scenario& sc, const std::vector<const
   int reused = 0;
   for (size_t l = 0; l < meshes.size(); ++l) {
     bool hit = false;
-    models.push_back(cached_level_model(*meshes[l], laws.laws[l],
-                                        is_semi_implicit(sc.time.integrator), laws.held[l], &hit));
-    if (sc.time_levels.enabled && is_semi_implicit(sc.time.integrator))
-      prepare_semi_implicit_time_levels(models.back());
+    models.push_back(scenario_level_model(sc, *meshes[l], laws, static_cast<int>(l), &hit));
     reused += hit;
   }
   if (reused > 0)
@@ -117,10 +128,8 @@ StableStep stable_step(const Scenario& sc, const std::vector<const TetMesh*>& me
                                    : static_cast<int>(meshes.size()) - 1;
   std::vector<LevelModel> own_models;
   if (!built)
-    for (int l = 0; l <= last; ++l) {
-      own_models.push_back(cached_level_model(*meshes[l], laws->laws[l], semi, laws->held[l]));
-      if (semi && sc.time_levels.enabled) prepare_semi_implicit_time_levels(own_models.back());
-    }
+    for (int l = 0; l <= last; ++l)
+      own_models.push_back(scenario_level_model(sc, *meshes[l], *laws, l));
   const std::vector<LevelModel>& models = built ? *built : own_models;
   std::vector<std::vector<PointInertia>> star;
   for (int l = 0; l <= last; ++l) star.push_back(models[l].star);

@@ -11,10 +11,11 @@ int stable_time_level(const TimeLevelRules& rules, double stable) {
 
 std::vector<std::int8_t> courant_levels(const LevelModel& model, const TimeLevelRules& rules) {
   std::vector<std::int8_t> level(model.num_points(), 0);
-  for (int i = 0; i < model.num_points(); ++i)
-    level[i] = static_cast<std::int8_t>(stable_time_level(
-        rules, stable_step_of(calibrated(model.star[i], model, rules.semi_implicit, true, 0.0, 0.0, i),
-                              rules.semi_implicit)));
+  for (int i = 0; i < model.num_points(); ++i) {
+    const PointInertia p = calibrated(model.star[i], model, rules.semi_implicit, true, 0.0, 0.0, i);
+    level[i] = static_cast<std::int8_t>(
+        stable_time_level(rules, stable_step_of(p, rules.semi_implicit)));
+  }
   return level;
 }
 
