@@ -20,6 +20,7 @@ namespace mrsim {
 
 class FrameCompressor;
 class LevelGrids;
+class PieceWriters;
 
 class VtkSeriesWriter {
  public:
@@ -52,6 +53,7 @@ class VtkSeriesWriter {
   std::vector<Entry> entries_;
   std::unique_ptr<LevelGrids> grids_;  // each level's grid, its cells built once
   std::unique_ptr<FrameCompressor> compressor_;  // compresses the blocks that changed
+  std::unique_ptr<PieceWriters> writers_;  // each block's XML writer, kept from frame to frame
   std::string piece_buffer_;  // each piece's bytes, its capacity kept from piece to piece
 };
 
