@@ -2,7 +2,6 @@
 
 #include <string_view>
 
-#include "io/atomic_file.hpp"
 #include "io/exact_number.hpp"
 
 namespace mrsim {
@@ -37,10 +36,6 @@ std::string pvd_text(std::span<const PvdEntry> entries) {
   }
   text += "  </Collection>\n</VTKFile>\n";
   return text;
-}
-
-void write_pvd_file(const std::filesystem::path& file, std::span<const PvdEntry> entries) {
-  write_file_atomically(file, pvd_text(entries));
 }
 
 }  // namespace mrsim

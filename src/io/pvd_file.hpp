@@ -14,7 +14,4 @@ struct PvdEntry {
 /// The XML text of a collection listing `entries` in order.
 std::string pvd_text(std::span<const PvdEntry> entries);
 
-/// Rewrites `file` atomically with `entries`. Throws RunError on failure.
-void write_pvd_file(const std::filesystem::path& file, std::span<const PvdEntry> entries);
-
 }  // namespace mrsim

@@ -21,9 +21,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // What a run writes into its folder (docs/output.md "Layout").
-constexpr std::array<const char*, 7> kOutputs = {
-    "frames", "frames.pvd", "log.h5", "summary.json", "scenario.yaml", "checkpoint.h5",
-    "checkpoint.h5.tmp"};
+constexpr std::array<const char*, 8> kOutputs = {
+    "frames",        "frames.pvd",    "frames.pvd.spare", "log.h5", "summary.json",
+    "scenario.yaml", "checkpoint.h5", "checkpoint.h5.tmp"};
 
 std::string holder_of(int fd) {
   std::array<char, 32> pid{};

@@ -2,8 +2,8 @@
 // ParaView time series (product.md "What a run writes"): frames/frame_NNNNNN.vtm with one
 // UnstructuredGrid block per level (binary, LZ4 unless asked otherwise), optionally followed by
 // the PolyData blocks `surface` (the object's skin) and `tool`, and frames.pvd listing every
-// frame with its simulated time at full precision. The .pvd is rewritten after each frame (write
-// to a temporary file, then rename) so a run killed or failed mid-way leaves a valid series.
+// frame with its simulated time at full precision. The .pvd is replaced after each frame, whole
+// and atomically (io/swapped_file.hpp), so a run killed or failed mid-way leaves a valid series.
 #include <filesystem>
 #include <memory>
 #include <span>
@@ -21,6 +21,7 @@ namespace mrsim {
 class FrameCompressor;
 class LevelGrids;
 class PieceWriters;
+class SwappedFile;
 
 class VtkSeriesWriter {
  public:
@@ -54,6 +55,7 @@ class VtkSeriesWriter {
   std::unique_ptr<LevelGrids> grids_;  // each level's grid, its cells built once
   std::unique_ptr<FrameCompressor> compressor_;  // compresses the blocks that changed
   std::unique_ptr<PieceWriters> writers_;  // each block's XML writer, kept from frame to frame
+  std::unique_ptr<SwappedFile> pvd_;  // frames.pvd, replaced after each frame
   std::string piece_buffer_;  // each piece's bytes, its capacity kept from piece to piece
 };
 

@@ -347,7 +347,7 @@ TEST(VtkSeriesWriter, FrameWriteFailureThrowsRunErrorNamingTheFile) {
 TEST(VtkSeriesWriter, PvdWriteFailureThrowsRunError) {
   test::TempDir dir;
   VtkSeriesWriter writer(dir.path());
-  std::filesystem::create_directories(dir.path() / "frames.pvd.tmp");  // cannot be opened as a file
+  std::filesystem::create_directories(dir.path() / "frames.pvd.spare");  // cannot be opened as a file
   const auto levels = test::sample_frame(0);
   EXPECT_THROW(writer.write_frame(0, 0.0, test::views_of(levels)), RunError);
 }
