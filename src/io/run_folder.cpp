@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <system_error>
 
 #include "core/error.hpp"
@@ -21,9 +22,12 @@ namespace {
 namespace fs = std::filesystem;
 
 // What a run writes into its folder (docs/output.md "Layout").
-constexpr std::array<const char*, 8> kOutputs = {
-    "frames",        "frames.pvd",    "frames.pvd.spare", "log.h5", "summary.json",
-    "scenario.yaml", "checkpoint.h5", "checkpoint.h5.tmp"};
+// frames.recycled first: a run killed before it ended leaves one, which goes before frames/ takes
+// its name.
+constexpr std::array<const char*, 9> kOutputs = {
+    "frames.recycled", "frames",        "frames.pvd",    "frames.pvd.spare", "log.h5",
+    "summary.json",    "scenario.yaml", "checkpoint.h5", "checkpoint.h5.tmp"};
+constexpr const char* kRecycled = "frames.recycled";
 
 std::string holder_of(int fd) {
   std::array<char, 32> pid{};
@@ -48,7 +52,10 @@ void clear_previous_run(const fs::path& dir, const std::vector<fs::path>& inputs
         throw InputError("the output folder " + dir.string() + " holds an input of this run, " +
                          input.string() + ", where the run writes " + name +
                          "; choose another output folder (-o)");
-    fs::remove_all(dir / name, ec);
+    // The old frames are not removed but kept for the new ones' files (io/file_recycler.hpp);
+    // what the new run does not reuse goes when it ends.
+    if (std::string_view(name) == "frames") fs::rename(dir / name, dir / kRecycled, ec);
+    if (std::string_view(name) != "frames" || ec) fs::remove_all(dir / name, ec);
     if (ec)
       throw RunError("cannot remove the previous run's " + (dir / name).string() + ": " +
                      ec.message());
@@ -117,6 +124,8 @@ void RunFolder::check_intact() const {
 }
 
 RunFolder::~RunFolder() {
+  std::error_code ignored;  // the previous run's frame files the run did not reuse
+  if (fd_ >= 0) fs::remove_all(dir_ / kRecycled, ignored);
   if (fd_ >= 0) ::close(fd_);  // releases the lock
 }
 

@@ -2,9 +2,10 @@
 // One run per output folder (issue 18; docs/output.md "One run per folder"). The folder is
 // locked (flock on OUTDIR/.mrsim.lock) before anything is written: a second run into a folder
 // whose run is still going exits 2 and touches nothing. A folder that holds a finished run is
-// taken over cleanly: the outputs mrsim writes there (frames/, frames.pvd, log.h5,
-// summary.json, scenario.yaml, checkpoint.h5) are removed first, so that no stale frame of the old run stays
-// beside the new ones. Other files of the folder are left alone, and so is any input of the run
+// taken over cleanly: the outputs mrsim writes there (frames.pvd, log.h5, summary.json,
+// scenario.yaml, checkpoint.h5) are removed first, and frames/ becomes frames.recycled/, whose
+// files the new frames are written over (io/file_recycler.hpp) and whose rest is removed when the
+// run ends, so that no stale frame of the old run stays beside the new ones. Other files of the folder are left alone, and so is any input of the run
 // (`mrsim run scenario.yaml -o .` must not delete its own scenario.yaml: that is refused). The
 // lock is released when the process ends, however it ends (the kernel drops it), so a killed
 // run never blocks the next.

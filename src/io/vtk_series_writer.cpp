@@ -23,6 +23,7 @@
 #include "core/error.hpp"
 #include "io/frame_data_check.hpp"
 #include "io/pvd_file.hpp"
+#include "io/file_recycler.hpp"
 #include "io/swapped_file.hpp"
 #include "io/vtk_error_capture.hpp"
 #include "io/vtk_level_grid.hpp"
@@ -36,6 +37,7 @@ namespace {
 constexpr const char* kFramesDir = "frames";
 constexpr const char* kPvdName = "frames.pvd";
 constexpr const char* kPartialDir = ".partial";  // frames/.partial: a frame being written
+constexpr const char* kRecycledDir = "frames.recycled";  // the previous run's (RunFolder)
 
 // frames/frame_NNNNNN.vtm, relative to the output folder (the form the .pvd refers to).
 std::filesystem::path frame_file(int frame_index) {
@@ -174,29 +176,14 @@ class PieceWriters {
 
 namespace {
 
-void write_text(const std::filesystem::path& file, const std::string& text) {
-  std::FILE* out = std::fopen(file.c_str(), "wb");
-  bool ok = out != nullptr && std::fwrite(text.data(), 1, text.size(), out) == text.size();
-  int error = errno;
-  if (out != nullptr && std::fclose(out) != 0 && ok) {
-    ok = false;
-    error = errno;
-  }
-  if (!ok)
-    throw RunError("cannot write " + file.string() + ": " +
-                   std::generic_category().message(error) + " (errno " + std::to_string(error) +
-                   ")");
-}
-
 // The frame as vtkXMLMultiBlockDataWriter lays it out (a .vtm naming one file per block in a
 // folder of the frame's name, the same bytes in every piece), each piece written at once.
 void write_vtm(const std::filesystem::path& file, vtkMultiBlockDataSet* blocks,
-               vtkDataCompressor* compressor, PieceWriters& writers, std::string& buffer) {
+               vtkDataCompressor* compressor, PieceWriters& writers, FileRecycler& recycler,
+               std::string& buffer) {
   namespace fs = std::filesystem;
   const std::string stem = file.stem().string();
-  std::error_code ec;
-  fs::create_directories(file.parent_path() / stem, ec);
-  if (ec) throw RunError("cannot write " + file.string() + ": " + ec.message());
+  recycler.make_directory(file.parent_path() / stem);
   std::string vtm = "<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
                     "byte_order=\"LittleEndian\" header_type=\"UInt64\"";
   // The name VTK's own writers give it: the class readers instantiate to decompress.
@@ -212,13 +199,13 @@ void write_vtm(const std::filesystem::path& file, vtkMultiBlockDataSet* blocks,
       writers.write<vtkXMLUnstructuredGridWriter>(k, block, compressor, path.string(), buffer);
     else
       writers.write<vtkXMLPolyDataWriter>(k, block, compressor, path.string(), buffer);
-    write_text(path, buffer);
+    recycler.write_file(path, buffer);
     const char* name = blocks->GetMetaData(k)->Get(vtkCompositeDataSet::NAME());
     vtm += "    <DataSet index=\"" + std::to_string(k) + "\" name=\"" + name + "\" file=\"" + piece +
            "\"/>\n";
   }
   vtm += "  </vtkMultiBlockDataSet>\n</VTKFile>\n";
-  write_text(file, vtm);
+  recycler.write_file(file, vtm);
 }
 
 }  // namespace
@@ -235,7 +222,8 @@ VtkSeriesWriter::VtkSeriesWriter(std::filesystem::path out_dir, FrameCompression
       grids_(std::make_unique<LevelGrids>()),
       compressor_(std::make_unique<FrameCompressor>(compression)),
       writers_(std::make_unique<PieceWriters>()),
-      pvd_(std::make_unique<SwappedFile>(out_dir_ / kPvdName)) {
+      pvd_(std::make_unique<SwappedFile>(out_dir_ / kPvdName)),
+      recycler_(std::make_unique<FileRecycler>(out_dir_ / kRecycledDir)) {
   // Created up front so that an unusable output folder fails the run before any step.
   std::error_code ec;
   std::filesystem::create_directories(out_dir_ / kFramesDir, ec);
@@ -245,6 +233,8 @@ VtkSeriesWriter::VtkSeriesWriter(std::filesystem::path out_dir, FrameCompression
 }
 
 std::size_t VtkSeriesWriter::reused_blocks() const { return compressor_->blocks().reused(); }
+
+std::size_t VtkSeriesWriter::recycled_files() const { return recycler_->reused(); }
 
 void VtkSeriesWriter::write_frame(int frame_index, double time,
                                   std::span<const LevelFrameView> levels,
@@ -277,7 +267,8 @@ void VtkSeriesWriter::write_complete(const std::filesystem::path& relative,
     throw RunError("cannot write " + (out_dir_ / relative).string() + ": cannot create " +
                    partial.string() + ": " + ec.message());
   compressor_->begin_frame();
-  write_vtm(partial / vtm, blocks, compressor_->get(), *writers_, piece_buffer_);
+  write_vtm(partial / vtm, blocks, compressor_->get(), *writers_, *recycler_, piece_buffer_);
+  recycler_->release(partial / pieces);
   if (fs::exists(partial / pieces, ec)) fs::rename(partial / pieces, frames / pieces, ec);
   if (!ec) fs::rename(partial / vtm, frames / vtm, ec);
   if (ec)

@@ -22,6 +22,7 @@ class FrameCompressor;
 class LevelGrids;
 class PieceWriters;
 class SwappedFile;
+class FileRecycler;
 
 class VtkSeriesWriter {
  public:
@@ -40,6 +41,8 @@ class VtkSeriesWriter {
   int frames_written() const { return static_cast<int>(entries_.size()); }
   /// Compressed blocks taken unchanged from the frame before (io/vtk_repeat_compressor.hpp).
   std::size_t reused_blocks() const;
+  /// Files of the previous run's frames written over instead of made (io/file_recycler.hpp).
+  std::size_t recycled_files() const;
   /// Goes on with the series of a run resumed after frame `last` (mrsim run --resume): `kept`
   /// (index, time) are its frames up to there, each of which must be complete on disk (else
   /// InputError). Every later frame and any partial one are removed (a run killed after its
@@ -56,6 +59,7 @@ class VtkSeriesWriter {
   std::unique_ptr<FrameCompressor> compressor_;  // compresses the blocks that changed
   std::unique_ptr<PieceWriters> writers_;  // each block's XML writer, kept from frame to frame
   std::unique_ptr<SwappedFile> pvd_;  // frames.pvd, replaced after each frame
+  std::unique_ptr<FileRecycler> recycler_;  // the previous run's frame files, written over
   std::string piece_buffer_;  // each piece's bytes, its capacity kept from piece to piece
 };
 
