@@ -18,6 +18,9 @@
 
 namespace mrsim {
 
+/// Where RunFolder puts the finished run's frames/ for the new run's to be written over.
+inline constexpr const char* kRecycledFramesDir = "frames.recycled";
+
 class FileRecycler {
  public:
   /// Takes the folders and files directly in `pool` (none if it does not exist).

@@ -14,6 +14,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "io/file_recycler.hpp"
 
 namespace mrsim {
 
@@ -24,10 +25,10 @@ namespace fs = std::filesystem;
 // What a run writes into its folder (docs/output.md "Layout").
 // frames.recycled first: a run killed before it ended leaves one, which goes before frames/ takes
 // its name.
+constexpr const char* kRecycled = kRecycledFramesDir;
 constexpr std::array<const char*, 9> kOutputs = {
-    "frames.recycled", "frames",        "frames.pvd",    "frames.pvd.spare", "log.h5",
-    "summary.json",    "scenario.yaml", "checkpoint.h5", "checkpoint.h5.tmp"};
-constexpr const char* kRecycled = "frames.recycled";
+    kRecycled,      "frames",        "frames.pvd",       "frames.pvd.spare", "log.h5",
+    "summary.json", "scenario.yaml", "checkpoint.h5",    "checkpoint.h5.tmp"};
 
 std::string holder_of(int fd) {
   std::array<char, 32> pid{};

@@ -2,22 +2,17 @@
 
 #include <vtkCompositeDataSet.h>
 #include <vtkDataCompressor.h>
-#include <vtkErrorCode.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
-#include <vtkXMLPolyDataWriter.h>
-#include <vtkXMLUnstructuredGridWriter.h>
 
 #include <array>
 #include <cerrno>
 #include <cstdio>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
-#include <type_traits>
 #include <vector>
 
 #include "core/error.hpp"
@@ -25,11 +20,10 @@
 #include "io/pvd_file.hpp"
 #include "io/file_recycler.hpp"
 #include "io/swapped_file.hpp"
-#include "io/vtk_error_capture.hpp"
 #include "io/vtk_level_grid.hpp"
 #include "io/vtk_repeat_compressor.hpp"
 #include "io/vtk_surface_blocks.hpp"
-#include "io/vtk_xml_piece.hpp"
+#include "io/vtk_piece_writers.hpp"
 
 namespace mrsim {
 namespace {
@@ -37,7 +31,6 @@ namespace {
 constexpr const char* kFramesDir = "frames";
 constexpr const char* kPvdName = "frames.pvd";
 constexpr const char* kPartialDir = ".partial";  // frames/.partial: a frame being written
-constexpr const char* kRecycledDir = "frames.recycled";  // the previous run's (RunFolder)
 
 // frames/frame_NNNNNN.vtm, relative to the output folder (the form the .pvd refers to).
 std::filesystem::path frame_file(int frame_index) {
@@ -78,101 +71,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> frame_blocks(LevelGrids& grids,
   return blocks;
 }
 
-// liver_probe (four levels every 20 ms, 70 frames, one thread): zlib level 5 (VTK's default)
-// 3.13 s of output, level 1 2.50 s for 45 MB, LZ4 about 0.9 s for 58 MB: LZ4 by default, so
-// that writing frames does not keep a run from its simulated time; zlib to keep smaller files
-// (io/vtk_repeat_compressor.hpp sets the levels, and compresses only the blocks that changed).
-void set_compressor(vtkXMLWriter* writer, vtkDataCompressor* compressor) {
-  if (compressor != nullptr)
-    writer->SetCompressor(compressor);
-  else
-    writer->SetCompressorTypeToNone();
-}
-
-// A VTK XML writer that writes into the stream it is given: VTK's writers keep a protected
-// `Stream`, used as is when set (vtkXMLWriter::OpenStream), which their own string output would
-// otherwise create, copy twice when done and free for every piece.
-template <class Writer>
-class StreamWriter : public Writer {
- public:
-  static StreamWriter* make() {
-    auto* w = new StreamWriter;
-    w->InitializeObjectBase();
-    return w;
-  }
-  void write_into(std::ostream* stream) { this->Stream = stream; }
-};
-
-// One block into memory: the XML writer patches offsets by seeking back in its stream, which on
-// a file is a flush and two lseek per array (1 100 writes and 1 200 seeks a liver_probe frame);
-// in memory it costs nothing, and the piece is then written with one call. `buffer` (empty,
-// its capacity kept from the pieces before) receives the piece: the stream writes into its
-// capacity, so a frame's pieces allocate nothing once the first frame has grown it.
-template <class Writer>
-void piece_bytes(StreamWriter<Writer>* writer, vtkDataObject* block,
-                 vtkDataCompressor* compressor, const std::string& name, std::string& buffer) {
-  writer->SetInputData(block);
-  set_compressor(writer, compressor);
-  buffer.clear();
-  std::ostringstream out(std::move(buffer));
-  writer->write_into(&out);
-  VtkErrorCapture errors;
-  const int ok = writer->Write();
-  writer->write_into(nullptr);
-  writer->SetInputData(nullptr);  // the block is the frame's: the writer keeps no hold on it
-  buffer = std::move(out).str();
-  if (ok != 1 || writer->GetErrorCode() != vtkErrorCode::NoError || errors.any() || !out) {
-    std::string reason = errors.summary();
-    if (reason.empty()) reason = vtk_error_code_text(writer->GetErrorCode());
-    throw RunError("cannot write " + name + ": " + reason);
-  }
-}
-
-template <class Writer>
-vtkSmartPointer<StreamWriter<Writer>> make_piece_writer() {
-  vtkSmartPointer<StreamWriter<Writer>> writer;
-  writer.TakeReference(StreamWriter<Writer>::make());
-  // Raw appended binary: the smallest and fastest XML form ParaView and vtk read.
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
-  writer->SetHeaderTypeToUInt64();  // blocks over 4 GiB stay writable
-  return writer;
-}
-
 }  // namespace
-
-// The pieces' writers. Each block is written by VtkXmlPiece (io/vtk_xml_piece.hpp: VTK's bytes
-// without VTK's pipeline), or, when it holds what only VTK writes exactly, by VTK's XML writer
-// for its position, kept from frame to frame (a writer and its executive made for every piece
-// cost a fifth of VTK's time).
-class PieceWriters {
- public:
-  template <class Writer>
-  void write(unsigned k, vtkDataObject* block, vtkDataCompressor* compressor,
-             const std::string& name, std::string& buffer) {
-    if (piece_.write(block, compressor, buffer)) return;
-    piece_bytes(at<Writer>(k), block, compressor, name, buffer);
-  }
-
- private:
-  template <class Writer>
-  StreamWriter<Writer>* at(unsigned k) {
-    auto& kept = kept_for<Writer>();
-    if (kept.size() <= k) kept.resize(k + 1);
-    if (!kept[k]) kept[k] = make_piece_writer<Writer>();
-    return kept[k];
-  }
-  template <class Writer>
-  std::vector<vtkSmartPointer<StreamWriter<Writer>>>& kept_for() {
-    if constexpr (std::is_same_v<Writer, vtkXMLUnstructuredGridWriter>)
-      return grids_;
-    else
-      return polys_;
-  }
-  VtkXmlPiece piece_;
-  std::vector<vtkSmartPointer<StreamWriter<vtkXMLUnstructuredGridWriter>>> grids_;
-  std::vector<vtkSmartPointer<StreamWriter<vtkXMLPolyDataWriter>>> polys_;
-};
 
 namespace {
 
@@ -195,10 +94,7 @@ void write_vtm(const std::filesystem::path& file, vtkMultiBlockDataSet* blocks,
     const bool grid = vtkUnstructuredGrid::SafeDownCast(block) != nullptr;
     const std::string piece = stem + "/" + stem + "_" + std::to_string(k) + (grid ? ".vtu" : ".vtp");
     const fs::path path = file.parent_path() / piece;
-    if (grid)
-      writers.write<vtkXMLUnstructuredGridWriter>(k, block, compressor, path.string(), buffer);
-    else
-      writers.write<vtkXMLPolyDataWriter>(k, block, compressor, path.string(), buffer);
+    writers.write(k, block, compressor, path.string(), buffer);
     recycler.write_file(path, buffer);
     const char* name = blocks->GetMetaData(k)->Get(vtkCompositeDataSet::NAME());
     vtm += "    <DataSet index=\"" + std::to_string(k) + "\" name=\"" + name + "\" file=\"" + piece +
@@ -223,7 +119,7 @@ VtkSeriesWriter::VtkSeriesWriter(std::filesystem::path out_dir, FrameCompression
       compressor_(std::make_unique<FrameCompressor>(compression)),
       writers_(std::make_unique<PieceWriters>()),
       pvd_(std::make_unique<SwappedFile>(out_dir_ / kPvdName)),
-      recycler_(std::make_unique<FileRecycler>(out_dir_ / kRecycledDir)) {
+      recycler_(std::make_unique<FileRecycler>(out_dir_ / kRecycledFramesDir)) {
   // Created up front so that an unusable output folder fails the run before any step.
   std::error_code ec;
   std::filesystem::create_directories(out_dir_ / kFramesDir, ec);
@@ -235,6 +131,8 @@ VtkSeriesWriter::VtkSeriesWriter(std::filesystem::path out_dir, FrameCompression
 std::size_t VtkSeriesWriter::reused_blocks() const { return compressor_->blocks().reused(); }
 
 std::size_t VtkSeriesWriter::recycled_files() const { return recycler_->reused(); }
+
+std::size_t VtkSeriesWriter::pieces_written_by_vtk() const { return writers_->written_by_vtk(); }
 
 void VtkSeriesWriter::write_frame(int frame_index, double time,
                                   std::span<const LevelFrameView> levels,

@@ -43,6 +43,8 @@ class VtkSeriesWriter {
   std::size_t reused_blocks() const;
   /// Files of the previous run's frames written over instead of made (io/file_recycler.hpp).
   std::size_t recycled_files() const;
+  /// Pieces left to VTK's own XML writer (io/vtk_piece_writers.hpp).
+  std::size_t pieces_written_by_vtk() const;
   /// Goes on with the series of a run resumed after frame `last` (mrsim run --resume): `kept`
   /// (index, time) are its frames up to there, each of which must be complete on disk (else
   /// InputError). Every later frame and any partial one are removed (a run killed after its

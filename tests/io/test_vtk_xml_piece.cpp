@@ -13,6 +13,7 @@
 #include <vtkUnsignedShortArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include <cmath>
@@ -24,11 +25,13 @@
 #include "io/frame_compression.hpp"
 #include "io/vtk_level_grid.hpp"
 #include "io/vtk_repeat_compressor.hpp"
+#include "io/vtk_series_writer.hpp"
 #include "io/vtk_surface_blocks.hpp"
 #include "io/vtk_xml_piece.hpp"
 #include "mesh/box_mesh.hpp"
 #include "sample_frames.hpp"
 #include "sample_tools.hpp"
+#include "temp_dir.hpp"
 
 namespace mrsim {
 namespace {
@@ -150,6 +153,42 @@ INSTANTIATE_TEST_SUITE_P(VtkXmlPiece, XmlPieceCompression,
                              default: return std::string("None");
                            }
                          });
+
+// Every block of the frames mrsim writes (levels, skin, tools) goes through VtkXmlPiece: none is
+// left to VTK's writer.
+TEST(VtkXmlPiece, WritesEveryBlockOfTheSeries) {
+  test::TempDir dir;
+  VtkSeriesWriter writer(dir.path());
+  for (int f = 0; f < 3; ++f) {
+    const auto levels = test::sample_frame(f);
+    const test::SampleSurface surface(f);
+    const SurfaceFrameView skin = surface.view();
+    const auto tools = test::sample_tools(f);
+    writer.write_frame(f, test::kSampleTimes[f], test::views_of(levels), &skin,
+                       test::views_of(tools));
+  }
+  EXPECT_EQ(writer.frames_written(), 3);
+  EXPECT_EQ(writer.pieces_written_by_vtk(), 0u);
+}
+
+// A block left to VTK (a NaN in a level: VTK's ranges skip it) is still written, by VTK's
+// writer, and reads back with its NaN.
+TEST(VtkXmlPiece, ABlockLeftToVtkIsWrittenByVtk) {
+  test::TempDir dir;
+  VtkSeriesWriter writer(dir.path());
+  auto levels = test::sample_frame(0);
+  levels[1].criterion[2] = std::numeric_limits<double>::quiet_NaN();
+  writer.write_frame(0, 0.0, test::views_of(levels));
+  EXPECT_EQ(writer.pieces_written_by_vtk(), 1u);
+  auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  const auto piece = dir.path() / "frames" / "frame_000000" / "frame_000000_1.vtu";
+  reader->SetFileName(piece.c_str());
+  reader->Update();
+  vtkDataArray* criterion = reader->GetOutput()->GetPointData()->GetArray("criterion");
+  ASSERT_NE(criterion, nullptr);
+  EXPECT_TRUE(std::isnan(criterion->GetComponent(2, 0)));
+  EXPECT_EQ(criterion->GetComponent(3, 0), levels[1].criterion[3]);
+}
 
 // What VTK writes in its own way (NaN skipped from ranges, names it makes up, IdType
 // attributes, empty ranges) is left to VTK's writer: write() says so before compressing.
