@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -32,6 +33,8 @@ constexpr std::size_t kBlockSize = 32768;  // vtkXMLWriter's BlockSize: bytes pe
 constexpr std::size_t kReserved = 20;      // vtkXMLWriter::ReserveAttributeSpace's default width
 
 static_assert(sizeof(long) == 8, "VTK_LONG is written as Int64 on LP64 platforms only");
+static_assert(std::endian::native == std::endian::little,
+              "pieces are declared LittleEndian and hold the values as in memory");
 
 // The XML word type of a VTK data type, nullptr for those left to VTK's writer.
 const char* word_type(int type) {
