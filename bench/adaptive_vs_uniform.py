@@ -23,7 +23,9 @@ empties it before each run, as a hierarchy's very first run.
 After the pairs, the adaptive run is also timed as bundled, with its VTK frames written (unless
 --no-frames): its real-time factor then, and the frames' own wall time. For both, the frames
 that took longer than frame_dt of wall time (log.h5 /frames/wall_time_parts, output included)
-and the slowest: a real-time loop misses those, whatever the average.
+and the slowest: a real-time loop misses those, whatever the average. The framed runs go into one
+folder, as a user re-runs a scenario: from the second on, each writes its frames over the files
+of the one before (io/file_recycler.hpp), so the median is a re-run's, not a first run's.
 
 --callgrind also runs each kind once under valgrind's callgrind and prints the instructions each
 executes (user space, the whole process) and their ratio: a count that does not move with the
