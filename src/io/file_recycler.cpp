@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "io/file_overwrite.hpp"
 
 namespace mrsim {
 namespace {
@@ -25,25 +26,6 @@ namespace fs = std::filesystem;
 bool sole_regular_file(const fs::path& file) {
   struct stat st {};
   return ::lstat(file.c_str(), &st) == 0 && S_ISREG(st.st_mode) && st.st_nlink == 1;
-}
-
-void write_all(int fd, const fs::path& file, std::string_view bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::pwrite(fd, bytes.data() + done, bytes.size() - done,
-                               static_cast<off_t>(done));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int error = n < 0 ? errno : EIO;
-      ::close(fd);
-      fail(file, error);
-    }
-    done += static_cast<std::size_t>(n);
-  }
-}
-
-void close_or_fail(int fd, const fs::path& file) {
-  if (::close(fd) != 0) fail(file, errno);
 }
 
 }  // namespace
@@ -73,7 +55,7 @@ void FileRecycler::make_directory(const fs::path& dir) {
         continue;
       }
       std::error_code moved;
-      fs::rename(entry.path(), pool_ / ("returned_" + std::to_string(returned_++)), moved);
+      fs::rename(entry.path(), returned_path(), moved);
       if (moved) fs::remove_all(entry.path(), moved);  // the old frames' own, removed anyway
       if (moved) throw RunError("cannot clear " + entry.path().string() + ": " + moved.message());
     }
@@ -81,6 +63,11 @@ void FileRecycler::make_directory(const fs::path& dir) {
   }
   fs::create_directory(dir, ec);
   if (ec) throw RunError("cannot write " + dir.string() + ": " + ec.message());
+}
+
+// A new name in the pool for a file given back to it.
+fs::path FileRecycler::returned_path() {
+  return pool_ / ("returned_" + std::to_string(returned_++));
 }
 
 bool FileRecycler::take_file(const fs::path& file) {
@@ -109,14 +96,7 @@ void FileRecycler::write_file(const fs::path& file, std::string_view bytes) {
     const int fd = ::open(file.c_str(), O_WRONLY | O_CLOEXEC | O_NOFOLLOW);
     struct stat st {};
     if (fd >= 0 && ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_nlink == 1) {
-      write_all(fd, file, bytes);
-      if (static_cast<std::size_t>(st.st_size) > bytes.size() &&
-          ::ftruncate(fd, static_cast<off_t>(bytes.size())) != 0) {
-        const int error = errno;
-        ::close(fd);
-        fail(file, error);
-      }
-      close_or_fail(fd, file);
+      if (const int error = overwrite_and_close(fd, bytes); error != 0) fail(file, error);
       ++reused_;
       return;
     }
@@ -124,19 +104,18 @@ void FileRecycler::write_file(const fs::path& file, std::string_view bytes) {
     // made.
     if (fd >= 0) ::close(fd);
     std::error_code ec;
-    fs::rename(file, pool_ / ("returned_" + std::to_string(returned_++)), ec);
+    fs::rename(file, returned_path(), ec);
     if (ec) fail(file, EEXIST);
   }
   const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) fail(file, errno);
-  write_all(fd, file, bytes);
-  close_or_fail(fd, file);
+  if (const int error = overwrite_and_close(fd, bytes); error != 0) fail(file, error);
 }
 
 void FileRecycler::release(const fs::path& dir) {
   for (fs::path& file : files_) {
     if (file.parent_path() != dir) continue;
-    const fs::path back = pool_ / ("returned_" + std::to_string(returned_++));
+    const fs::path back = returned_path();
     std::error_code ec;
     fs::rename(file, back, ec);
     if (ec) {  // never publish a stale file with the frame: remove it, or fail

@@ -41,6 +41,7 @@ class FileRecycler {
 
  private:
   bool take_file(const std::filesystem::path& file);
+  std::filesystem::path returned_path();
   std::filesystem::path pool_;
   std::vector<std::filesystem::path> dirs_;   // old folders in the pool
   std::vector<std::filesystem::path> files_;  // old files, in the pool or in a folder taken

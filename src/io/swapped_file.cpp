@@ -1,8 +1,6 @@
 #include "io/swapped_file.hpp"
 
 #include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -11,6 +9,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "io/file_overwrite.hpp"
 
 namespace mrsim {
 namespace {
@@ -20,33 +19,13 @@ namespace {
                  std::strerror(err));
 }
 
-// `contents` as the whole of `spare`, written over what it held (no truncation to 0 first: ext4
-// would then write the data out on close) and cut to their length.
+// `contents` as the whole of `spare`, written over what it held.
 void overwrite(const std::filesystem::path& file, const std::filesystem::path& spare,
                std::string_view contents) {
   const int fd = ::open(spare.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
   if (fd < 0) fail(file, "open " + spare.string(), errno);
-  std::size_t done = 0;
-  while (done < contents.size()) {
-    const ssize_t n = ::pwrite(fd, contents.data() + done, contents.size() - done,
-                               static_cast<off_t>(done));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int err = n < 0 ? errno : EIO;
-      ::close(fd);
-      fail(file, "write " + spare.string(), err);
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  struct stat st {};
-  if (::fstat(fd, &st) != 0 ||
-      (static_cast<std::size_t>(st.st_size) > contents.size() &&
-       ::ftruncate(fd, static_cast<off_t>(contents.size())) != 0)) {
-    const int err = errno;
-    ::close(fd);
-    fail(file, "truncate " + spare.string(), err);
-  }
-  if (::close(fd) != 0) fail(file, "close " + spare.string(), errno);
+  if (const int error = overwrite_and_close(fd, contents); error != 0)
+    fail(file, "write " + spare.string(), error);
 }
 
 }  // namespace

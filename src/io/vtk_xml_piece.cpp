@@ -129,15 +129,20 @@ bool plain_array(vtkDataArray* a, bool ranged) {
   return plain_text(a->GetName()) && a->GetNumberOfTuples() > 0;
 }
 
+// A data array with its range (field, point and cell data, the points), opening section `tag`.
+bool add_ranged(std::vector<Item>& items, vtkDataArray* a, bool tuples, const char* tag) {
+  Item item{a, nullptr, nullptr, tag, tuples};
+  if (!plain_array(a, true) || !array_range(a, item.range)) return false;
+  item.name = a->GetName();
+  item.type = word_type(a->GetDataType());
+  items.push_back(item);
+  return true;
+}
+
 bool add_data(std::vector<Item>& items, vtkFieldData* data, bool tuples) {
-  for (int i = 0; i < data->GetNumberOfArrays(); ++i) {
-    vtkDataArray* a = vtkDataArray::SafeDownCast(data->GetAbstractArray(i));
-    Item item{a, nullptr, nullptr, nullptr, tuples};
-    if (!plain_array(a, true) || !array_range(a, item.range)) return false;
-    item.name = a->GetName();
-    item.type = word_type(a->GetDataType());
-    items.push_back(item);
-  }
+  for (int i = 0; i < data->GetNumberOfArrays(); ++i)
+    if (!add_ranged(items, vtkDataArray::SafeDownCast(data->GetAbstractArray(i)), tuples, nullptr))
+      return false;
   return true;
 }
 
@@ -216,12 +221,7 @@ bool collect(vtkPointSet* set, Layout& layout) {
   if (!add_data(items, set->GetPointData(), false)) return false;
   layout.cell_data = items.size();
   if (!add_data(items, set->GetCellData(), false)) return false;
-  vtkDataArray* xyz = set->GetPoints()->GetData();
-  Item points{xyz, nullptr, nullptr, "Points"};
-  if (!plain_array(xyz, true) || !array_range(xyz, points.range)) return false;
-  points.name = xyz->GetName();
-  points.type = word_type(xyz->GetDataType());
-  items.push_back(points);
+  if (!add_ranged(items, set->GetPoints()->GetData(), false, "Points")) return false;
   if (grid != nullptr) {
     vtkUnsignedCharArray* types = grid->GetCellTypesArray();
     if (grid->GetFaces() != nullptr || !add_cells(items, grid->GetCells(), "Cells") ||
