@@ -65,6 +65,7 @@ ExtendibleDataset::ExtendibleDataset(hid_t parent, const std::string& parent_pat
   if (!spec.description.empty()) {
     set_string_attribute(dataset_.get(), "description", spec.description, where());
   }
+  tail_ = TailChunk::of(dataset_.get(), where());
 }
 
 void ExtendibleDataset::open_existing(hid_t parent, const ExtendibleSpec& spec) {
@@ -81,6 +82,7 @@ void ExtendibleDataset::open_existing(hid_t parent, const ExtendibleSpec& spec) 
   }
   if (!fits) throw_error(where(), "append to it: its rows are not those this run writes");
   rows_ = dims[0];
+  tail_ = TailChunk::of(dataset_.get(), where());
 }
 
 void ExtendibleDataset::truncate(hsize_t rows) {
@@ -89,6 +91,7 @@ void ExtendibleDataset::truncate(hsize_t rows) {
                              std::to_string(rows_));
   std::vector<hsize_t> extent{rows};
   extent.insert(extent.end(), row_shape_.begin(), row_shape_.end());
+  if (tail_) tail_->forget();  // HDF5 clears the cut rows of the last chunk kept
   check(H5Dset_extent(dataset_.get(), extent.data()), where(), "truncate dataset");
   rows_ = rows;
 }
@@ -107,11 +110,21 @@ void ExtendibleDataset::append(const void* data, hid_t memory_type, hsize_t rows
   const hsize_t old_rows = rows_;
   rows_ += rows;  // the extent is already grown; keep the count in step even if writing fails
   if (row_size() == 0) return;  // nothing to write in rows of zero values
+  // Values whose bytes in memory are those of the file go straight into their chunk.
+  if (tail_ && H5Tequal(memory_type, file_type_.get()) > 0) {
+    tail_->write(dataset_.get(), static_cast<const unsigned char*>(data), old_rows, rows, where());
+    return;
+  }
+  if (tail_) tail_->forget();
+  write_converted(data, memory_type, old_rows, rows);
+}
 
-  std::vector<hsize_t> start(extent.size(), 0);
-  start[0] = old_rows;
-  std::vector<hsize_t> count = extent;
-  count[0] = rows;
+void ExtendibleDataset::write_converted(const void* data, hid_t memory_type, hsize_t first,
+                                        hsize_t rows) {
+  std::vector<hsize_t> start(row_shape_.size() + 1, 0);
+  start[0] = first;
+  std::vector<hsize_t> count{rows};
+  count.insert(count.end(), row_shape_.begin(), row_shape_.end());
   Handle file_space = checked(H5Dget_space(dataset_.get()), H5Sclose, where(), "get dataspace");
   check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(),
                             nullptr),

@@ -1,9 +1,12 @@
 #pragma once
 // A dataset that grows by whole rows along its first (unlimited) dimension: the building block
 // of every per-frame or per-event record in log.h5 (and of /tool/* later). Chunked, optionally
-// deflate-compressed; each append extends the extent and writes the new rows.
+// deflate-compressed; each append extends the extent and writes the new rows: numbers straight
+// into their chunk (io/tail_chunk.hpp), values HDF5 converts (variable-length strings) through
+// H5Dwrite().
 #include <hdf5.h>
 
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -11,6 +14,7 @@
 
 #include "io/hdf5_handle.hpp"
 #include "io/hdf5_types.hpp"
+#include "io/tail_chunk.hpp"
 
 namespace mrsim::h5 {
 
@@ -62,9 +66,11 @@ class ExtendibleDataset {
   Where where() const { return {file_, path_}; }
   void open_existing(hid_t parent, const ExtendibleSpec& spec);
   hid_t transfer_properties(hid_t memory_type, hsize_t rows);
+  void write_converted(const void* data, hid_t memory_type, hsize_t first, hsize_t rows);
   Handle dataset_;
   Handle file_type_;  // the dataset's element type in the file
   Handle transfer_;   // transfer properties: the conversion buffer sized to each write
+  std::optional<TailChunk> tail_;  // nothing: every write goes through H5Dwrite()
   std::vector<hsize_t> row_shape_;
   hsize_t rows_ = 0;
   std::string path_;  // full path in the file, for messages

@@ -1,0 +1,30 @@
+#pragma once
+// zlib streams of HDF5's deflate filter, made with one z_stream kept for the whole run: HDF5's
+// own filter calls compress2(), which sets up zlib anew for every chunk (some 100 000
+// instructions, its 256 KiB of tables allocated and cleared) where the data of a status row is
+// a few kilobytes. deflateReset() keeps the tables. Same level, window and memory settings as
+// compress2(): the same bytes as HDF5 writes.
+#include <span>
+#include <string>
+#include <vector>
+
+#include <zlib.h>
+
+namespace mrsim::h5 {
+
+class ZlibDeflater {
+ public:
+  explicit ZlibDeflater(int level);
+  ~ZlibDeflater();
+  ZlibDeflater(const ZlibDeflater&) = delete;
+  ZlibDeflater& operator=(const ZlibDeflater&) = delete;
+
+  /// `data` as one zlib stream; valid until the next call. std::runtime_error if zlib fails.
+  std::span<const unsigned char> compress(std::span<const unsigned char> data);
+
+ private:
+  z_stream stream_{};
+  std::vector<unsigned char> out_;
+};
+
+}  // namespace mrsim::h5
