@@ -115,10 +115,12 @@ void pass_bounds_on(const Hierarchy& h, const std::vector<int>& ghosts, int l,
     const MergedRows::Span row = rows.row(h, free, l, g);
     const std::span<const ActiveTerm> terms(rows.terms().data() + row.begin,
                                             rows.terms().data() + row.end);
-    double q = 0;  // Σ_j c_j² / a_j
+    double q = 0;  // Σ_j c_j² / a_j; |c|^1.5 as |c|·√|c|: pow() was a quarter of this pass
     for (const ActiveTerm& t : terms)
-      if (t.level >= 0 && out[t.level][t.point].mass > 0)
-        q += std::pow(std::abs(t.weight), 1.5) / out[t.level][t.point].mass;
+      if (t.level >= 0 && out[t.level][t.point].mass > 0) {
+        const double c = std::abs(t.weight);
+        q += c * std::sqrt(c) / out[t.level][t.point].mass;
+      }
     for (const ActiveTerm& t : terms) {
       if (t.level < 0) continue;  // the support does not move
       PointInertia& p = out[t.level][t.point];
