@@ -8,14 +8,20 @@
 namespace mrsim::h5 {
 namespace {
 
+// A chunk's dimensions: {rows, the row's dimensions...}.
+std::vector<hsize_t> chunk_shape(const ExtendibleSpec& spec) {
+  std::vector<hsize_t> chunk{std::max<hsize_t>(spec.chunk_rows, 1)};
+  // A zero-sized trailing dimension (a level without points) still needs a chunk of >= 1.
+  for (const hsize_t n : spec.row_shape) chunk.push_back(std::max<hsize_t>(n, 1));
+  return chunk;
+}
+
 // Creation properties: chunked (required for an unlimited dimension), optionally deflated.
 Handle creation_properties(const ExtendibleSpec& spec, Where where) {
   Handle properties = checked(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, where,
                               "create dataset properties");
   no_time_stamps(properties.get(), where);
-  std::vector<hsize_t> chunk{std::max<hsize_t>(spec.chunk_rows, 1)};
-  // A zero-sized trailing dimension (a level without points) still needs a chunk of >= 1.
-  for (const hsize_t n : spec.row_shape) chunk.push_back(std::max<hsize_t>(n, 1));
+  const std::vector<hsize_t> chunk = chunk_shape(spec);
   check(H5Pset_chunk(properties.get(), static_cast<int>(chunk.size()), chunk.data()), where,
         "set chunk size");
   if (spec.deflate_level > 0) {
@@ -65,7 +71,9 @@ ExtendibleDataset::ExtendibleDataset(hid_t parent, const std::string& parent_pat
   if (!spec.description.empty()) {
     set_string_attribute(dataset_.get(), "description", spec.description, where());
   }
-  tail_ = TailChunk::of(dataset_.get(), where());
+  // A dimension of zero (a level without points) has chunks of one: no whole rows to write.
+  if (std::find(spec.row_shape.begin(), spec.row_shape.end(), 0) == spec.row_shape.end())
+    tail_ = TailChunk::of(file_type_.get(), chunk_shape(spec), spec.deflate_level, where());
 }
 
 void ExtendibleDataset::open_existing(hid_t parent, const ExtendibleSpec& spec) {

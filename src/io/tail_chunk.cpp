@@ -32,8 +32,8 @@ std::optional<TailChunk> TailChunk::of(hid_t dataset, Where where) {
   Handle space = checked(H5Dget_space(dataset), H5Sclose, where, "get dataspace");
   Handle type = checked(H5Dget_type(dataset), H5Tclose, where, "get datatype");
   H5D_fill_value_t fill = H5D_FILL_VALUE_ERROR;
-  if (H5Pget_layout(dcpl.get()) != H5D_CHUNKED || !fixed_size_numbers(type.get()) ||
-      H5Pfill_value_defined(dcpl.get(), &fill) < 0 || fill != H5D_FILL_VALUE_DEFAULT)
+  if (H5Pget_layout(dcpl.get()) != H5D_CHUNKED || H5Pfill_value_defined(dcpl.get(), &fill) < 0 ||
+      fill != H5D_FILL_VALUE_DEFAULT)
     return std::nullopt;
   const std::optional<int> level = deflate_level(dcpl.get());
   const int rank = H5Sget_simple_extent_ndims(space.get());
@@ -43,16 +43,21 @@ std::optional<TailChunk> TailChunk::of(hid_t dataset, Where where) {
       H5Pget_chunk(dcpl.get(), rank, shape.data()) != rank)
     return std::nullopt;
   // Whole rows per chunk: each row dimension's chunk is the dimension itself.
-  if (!std::equal(dims.begin() + 1, dims.end(), shape.begin() + 1) || shape[0] == 0)
-    return std::nullopt;
+  if (!std::equal(dims.begin() + 1, dims.end(), shape.begin() + 1)) return std::nullopt;
+  return of(type.get(), std::move(shape), *level, where);
+}
+
+std::optional<TailChunk> TailChunk::of(hid_t file_type, std::vector<hsize_t> shape,
+                                       int deflate_level, Where where) {
+  if (!fixed_size_numbers(file_type) || shape.empty() || shape[0] == 0) return std::nullopt;
   TailChunk tail;
   tail.row_bytes_ = std::accumulate(shape.begin() + 1, shape.end(), hsize_t{1},
-                                    std::multiplies<>()) * H5Tget_size(type.get());
+                                    std::multiplies<>()) * H5Tget_size(file_type);
   if (tail.row_bytes_ == 0) return std::nullopt;
-  tail.type_ = std::move(type);
+  tail.type_ = checked(H5Tcopy(file_type), H5Tclose, where, "copy datatype");
   tail.shape_ = std::move(shape);
   tail.offset_.assign(tail.shape_.size(), 0);
-  if (*level > 0) tail.deflater_ = std::make_shared<ZlibDeflater>(*level);
+  if (deflate_level > 0) tail.deflater_ = std::make_shared<ZlibDeflater>(deflate_level);
   return tail;
 }
 

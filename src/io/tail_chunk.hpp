@@ -24,6 +24,10 @@ class TailChunk {
   /// deflate, a fill value of its own, values other than fixed-size numbers, chunks that do not
   /// hold whole rows.
   static std::optional<TailChunk> of(hid_t dataset, Where where);
+  /// For a dataset just created with these chunks (`shape`: {rows, the row's dimensions...}),
+  /// values of `file_type` and this deflate level (0: none), without asking HDF5.
+  static std::optional<TailChunk> of(hid_t file_type, std::vector<hsize_t> shape,
+                                     int deflate_level, Where where);
 
   /// Writes the dataset's rows [first, first + count) from `data` (their bytes as in the file;
   /// the extent already holds them). The rows before `first` in its chunk are this object's, or

@@ -1,6 +1,7 @@
 #include "physics/edge_operators.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace mrsim {
 
@@ -25,6 +26,40 @@ class NeighbourSlots {
 
 }  // namespace
 
+namespace {
+
+// Without coefficients only the weights are wanted: tr(B_ij) needs B's diagonal, not A. Each
+// diagonal entry is summed by the same operations as in the whole block, in the same order, and
+// the trace as Eigen's (d0 + d1) + d2: the same bits, without filling and adding 3×3 blocks.
+void laplacian_weights_only(const TetGeometry& geo, const PointAdjacency& adj, int widest,
+                            std::vector<double>& weights) {
+  std::vector<std::array<double, 3>> diagonal(widest);
+  NeighbourSlots slot(adj.num_points());
+  for (int i = 0; i < adj.num_points(); ++i) {
+    const int first = adj.nbr_start[i], degree = adj.nbr_start[i + 1] - first;
+    std::fill_n(diagonal.begin(), degree, std::array<double, 3>{0, 0, 0});
+    slot.set(adj, i);
+    for (int s = adj.inc_start[i]; s < adj.inc_start[i + 1]; ++s) {
+      const int t = adj.inc_tet[s];
+      const int a = adj.inc_local[s];
+      const double V = geo.volume[t];
+      const Vec3& ga = geo.grad[t][a];
+      for (int b = 0; b < 4; ++b) {
+        if (b == a) continue;
+        std::array<double, 3>& d = diagonal[slot[geo.tets[t][b]] - first];
+        const Vec3& gb = geo.grad[t][b];
+        const double dot = ga.dot(gb);
+        for (int c = 0; c < 3; ++c) d[c] += V * (gb[c] * ga[c] + dot);
+      }
+    }
+    slot.reset(adj, i);
+    for (int k = 0; k < degree; ++k)
+      weights[first + k] = -((diagonal[k][0] + diagonal[k][1]) + diagonal[k][2]) / 4.0;
+  }
+}
+
+}  // namespace
+
 CombinedEdges combined_edge_operators(const TetGeometry& geo, const PointAdjacency& adj,
                                       const std::vector<std::array<double, 2>>& coefficients) {
   CombinedEdges out;
@@ -36,10 +71,12 @@ CombinedEdges combined_edge_operators(const TetGeometry& geo, const PointAdjacen
   const int n = adj.num_points();
   int widest = 0;
   for (int i = 0; i < n; ++i) widest = std::max(widest, adj.nbr_start[i + 1] - adj.nbr_start[i]);
+  if (coefficients.empty()) {
+    laplacian_weights_only(geo, adj, widest, out.laplacian_w);
+    return out;
+  }
   std::vector<Mat3> row_a(widest), row_b(widest);  // A and B of one point's row
   NeighbourSlots slot(n);
-  // Without coefficients only the weights are wanted: tr(B_ij) needs B's diagonal, not A.
-  const bool weights_only = coefficients.empty();
   // Per point i, gather from its incident tets: entry (i, j) for every other vertex j.
   for (int i = 0; i < n; ++i) {
     const int first = adj.nbr_start[i], degree = adj.nbr_start[i + 1] - first;
@@ -55,12 +92,6 @@ CombinedEdges combined_edge_operators(const TetGeometry& geo, const PointAdjacen
         if (b == a) continue;
         const int e = slot[geo.tets[t][b]] - first;
         const Vec3& gb = geo.grad[t][b];
-        if (weights_only) {
-          // B's diagonal alone, each entry by the same operations as the whole block's.
-          const double d = ga.dot(gb);
-          for (int c = 0; c < 3; ++c) row_b[e](c, c) += V * (gb[c] * ga[c] + d);
-          continue;
-        }
         row_a[e].noalias() += V * ga * gb.transpose();
         row_b[e].noalias() += V * (gb * ga.transpose() + ga.dot(gb) * Mat3::Identity());
       }
