@@ -73,7 +73,8 @@ ExtendibleDataset::ExtendibleDataset(hid_t parent, const std::string& parent_pat
   }
   // A dimension of zero (a level without points) has chunks of one: no whole rows to write.
   if (std::find(spec.row_shape.begin(), spec.row_shape.end(), 0) == spec.row_shape.end())
-    tail_ = TailChunk::of(file_type_.get(), chunk_shape(spec), spec.deflate_level, where());
+    tail_ = TailChunk::of(file_type_.get(), chunk_shape(spec), spec.deflate_level,
+                          spec.deflate_runs, where());
 }
 
 void ExtendibleDataset::open_existing(hid_t parent, const ExtendibleSpec& spec) {
@@ -90,7 +91,7 @@ void ExtendibleDataset::open_existing(hid_t parent, const ExtendibleSpec& spec) 
   }
   if (!fits) throw_error(where(), "append to it: its rows are not those this run writes");
   rows_ = dims[0];
-  tail_ = TailChunk::of(dataset_.get(), where());
+  tail_ = TailChunk::of(dataset_.get(), spec.deflate_runs, where());
 }
 
 void ExtendibleDataset::truncate(hsize_t rows) {

@@ -44,6 +44,7 @@ ExtendibleSpec status_spec(std::size_t points) {
   // (20 to 544 points) that was most of each frame's log writing. Rows of a few hundred bytes
   // stay as they are; from 1024 points they are deflated.
   spec.deflate_level = points >= 1024 ? 4 : 0;
+  spec.deflate_runs = true;  // liver_L3's rows: 14.0 kB deflated, 16.0 kB at the default
   spec.description = "per frame and point: 0 inactive, 1 ghost, 2 active";
   return spec;
 }

@@ -27,7 +27,7 @@ bool fixed_size_numbers(hid_t type) {
 
 }  // namespace
 
-std::optional<TailChunk> TailChunk::of(hid_t dataset, Where where) {
+std::optional<TailChunk> TailChunk::of(hid_t dataset, bool runs, Where where) {
   Handle dcpl = checked(H5Dget_create_plist(dataset), H5Pclose, where, "get creation properties");
   Handle space = checked(H5Dget_space(dataset), H5Sclose, where, "get dataspace");
   Handle type = checked(H5Dget_type(dataset), H5Tclose, where, "get datatype");
@@ -44,11 +44,11 @@ std::optional<TailChunk> TailChunk::of(hid_t dataset, Where where) {
     return std::nullopt;
   // Whole rows per chunk: each row dimension's chunk is the dimension itself.
   if (!std::equal(dims.begin() + 1, dims.end(), shape.begin() + 1)) return std::nullopt;
-  return of(type.get(), std::move(shape), *level, where);
+  return of(type.get(), std::move(shape), *level, runs, where);
 }
 
 std::optional<TailChunk> TailChunk::of(hid_t file_type, std::vector<hsize_t> shape,
-                                       int deflate_level, Where where) {
+                                       int deflate_level, bool runs, Where where) {
   if (!fixed_size_numbers(file_type) || shape.empty() || shape[0] == 0) return std::nullopt;
   TailChunk tail;
   tail.row_bytes_ = std::accumulate(shape.begin() + 1, shape.end(), hsize_t{1},
@@ -57,7 +57,9 @@ std::optional<TailChunk> TailChunk::of(hid_t file_type, std::vector<hsize_t> sha
   tail.type_ = checked(H5Tcopy(file_type), H5Tclose, where, "copy datatype");
   tail.shape_ = std::move(shape);
   tail.offset_.assign(tail.shape_.size(), 0);
-  if (deflate_level > 0) tail.deflater_ = std::make_shared<ZlibDeflater>(deflate_level);
+  if (deflate_level > 0)
+    tail.deflater_ =
+        std::make_shared<ZlibDeflater>(deflate_level, runs ? Z_RLE : Z_DEFAULT_STRATEGY);
   return tail;
 }
 

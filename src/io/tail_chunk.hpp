@@ -23,11 +23,12 @@ class TailChunk {
   /// For `dataset`, or nothing when its chunks are not written here: a filter other than
   /// deflate, a fill value of its own, values other than fixed-size numbers, chunks that do not
   /// hold whole rows.
-  static std::optional<TailChunk> of(hid_t dataset, Where where);
+  /// `runs`: deflated with zlib's run-length strategy (any zlib stream is one HDF5 inflates).
+  static std::optional<TailChunk> of(hid_t dataset, bool runs, Where where);
   /// For a dataset just created with these chunks (`shape`: {rows, the row's dimensions...}),
   /// values of `file_type` and this deflate level (0: none), without asking HDF5.
   static std::optional<TailChunk> of(hid_t file_type, std::vector<hsize_t> shape,
-                                     int deflate_level, Where where);
+                                     int deflate_level, bool runs, Where where);
 
   /// Writes the dataset's rows [first, first + count) from `data` (their bytes as in the file;
   /// the extent already holds them). The rows before `first` in its chunk are this object's, or

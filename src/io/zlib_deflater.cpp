@@ -4,8 +4,9 @@
 
 namespace mrsim::h5 {
 
-ZlibDeflater::ZlibDeflater(int level) {
-  if (deflateInit(&stream_, level) != Z_OK)
+ZlibDeflater::ZlibDeflater(int level, int strategy) {
+  constexpr int kWindowBits = 15, kMemoryLevel = 8;  // deflateInit()'s, as compress2() uses
+  if (deflateInit2(&stream_, level, Z_DEFLATED, kWindowBits, kMemoryLevel, strategy) != Z_OK)
     throw std::runtime_error("zlib: cannot set up deflate at level " + std::to_string(level));
 }
 

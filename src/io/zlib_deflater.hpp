@@ -3,7 +3,7 @@
 // own filter calls compress2(), which sets up zlib anew for every chunk (some 100 000
 // instructions, its 256 KiB of tables allocated and cleared) where the data of a status row is
 // a few kilobytes. deflateReset() keeps the tables. Same level, window and memory settings as
-// compress2(): the same bytes as HDF5 writes.
+// compress2(); with zlib's default strategy, the same bytes as HDF5 writes.
 #include <span>
 #include <string>
 #include <vector>
@@ -14,7 +14,8 @@ namespace mrsim::h5 {
 
 class ZlibDeflater {
  public:
-  explicit ZlibDeflater(int level);
+  /// `strategy`: zlib's (Z_DEFAULT_STRATEGY, Z_RLE...).
+  explicit ZlibDeflater(int level, int strategy = Z_DEFAULT_STRATEGY);
   ~ZlibDeflater();
   ZlibDeflater(const ZlibDeflater&) = delete;
   ZlibDeflater& operator=(const ZlibDeflater&) = delete;

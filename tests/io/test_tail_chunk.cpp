@@ -116,6 +116,41 @@ TEST(TailChunk, DeflatedRowsAreTheChunksHdf5Writes) {
         << "frame " << f;
 }
 
+// The status rows of log.h5 are deflated with zlib's run-length strategy: HDF5 reads them back
+// as written, and runs of equal statuses take no more room than at the default strategy.
+TEST(TailChunk, RunLengthDeflatedRowsReadBackAndAreNoLarger) {
+  test::TempDir dir;
+  const auto path = dir.path() / "t.h5";
+  constexpr std::size_t kPoints = 3386;
+  constexpr int kFrames = 4;
+  {
+    H5Id file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+    ExtendibleSpec runs = status_spec(kPoints, 4), plain = status_spec(kPoints, 4);
+    runs.deflate_runs = true;
+    plain.name = "plain";
+    ExtendibleDataset a(file, "/", runs, path.string()), b(file, "/", plain, path.string());
+    for (int f = 0; f < kFrames; ++f) {
+      const auto row = status_row(f, kPoints);
+      a.append(std::span<const std::int8_t>(row));
+      b.append(std::span<const std::int8_t>(row));
+    }
+  }
+  H5Id file(test::open_read_only(path), H5Fclose);
+  H5Id runs(H5Dopen2(file, "/status", H5P_DEFAULT), H5Dclose),
+      plain(H5Dopen2(file, "/plain", H5P_DEFAULT), H5Dclose);
+  for (hsize_t f = 0; f < kFrames; ++f) {
+    const auto r = stored_chunk(runs, f, 2), p = stored_chunk(plain, f, 2);
+    EXPECT_NE(r, p) << "frame " << f << ": not the run-length strategy's stream";
+    EXPECT_LE(r.size(), p.size()) << "frame " << f;
+  }
+  const auto back = test::read_array<std::int8_t>(file, "/status");
+  ASSERT_EQ(back.dims, (std::vector<hsize_t>{kFrames, kPoints}));
+  for (int f = 0; f < kFrames; ++f)
+    EXPECT_TRUE(std::equal(back.values.begin() + f * kPoints, back.values.begin() + (f + 1) * kPoints,
+                           status_row(f, kPoints).begin()))
+        << "frame " << f;
+}
+
 ExtendibleSpec row_spec(hid_t file_type) {
   ExtendibleSpec spec;
   spec.name = "values";
