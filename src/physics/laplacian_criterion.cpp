@@ -13,6 +13,7 @@ Vec3 corrected_laplacian(const LevelModel& m, int i, const Vec3* u) {
   double vsum = 0;
   const int first = m.adj.inc_start[i], last = m.adj.inc_start[i + 1];
   for (int s = first; s < last; ++s) {
+    if (s + kTetPrefetchAhead < last) prefetch_tet(m.geo, m.adj.inc_tet[s + kTetPrefetchAhead]);
     const int t = m.adj.inc_tet[s];
     const Mat3 G = tet_gradient(m.geo.grad[t], m.geo.tets[t], u);
     if (s - first < kKept) kept[s - first] = G;

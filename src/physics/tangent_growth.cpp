@@ -66,7 +66,9 @@ double tangent_growths_of(const TetGeometry& geo, std::span<const int> tets,
   for (const int t : tets)
     for (const int a : geo.tets[t]) stiffness[a] = damping[a] = 0.0;
   double top = 0;
-  for (const int t : tets) {
+  for (std::size_t k = 0; k < tets.size(); ++k) {
+    if (k + kTetPrefetchAhead < tets.size()) prefetch_tet(geo, tets[k + kTetPrefetchAhead]);
+    const int t = tets[k];
     const Mat3 E = green_strain(tet_gradient(geo.grad[t], geo.tets[t], u.data()));
     const StiffnessScales& scales = geo.scales_of(t, law.scales);
     // g and g_d grow with e_max: a bound on it bounds both, and below the thresholds suffices.

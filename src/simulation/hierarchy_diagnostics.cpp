@@ -19,7 +19,9 @@ double level_elastic_energy(const HierarchicalSimulation& sim, int l) {
   live_tets(m, IndexSet::of(active), mark, tets);
   const Vec3* u = sim.state(l).u.data();
   double e = 0;
-  for (int t : tets) {
+  for (std::size_t k = 0; k < tets.size(); ++k) {
+    if (k + kTetPrefetchAhead < tets.size()) prefetch_tet(m.geo, tets[k + kTetPrefetchAhead]);
+    const int t = tets[k];
     const Mat3 G = tet_gradient(m.geo.grad[t], m.geo.tets[t], u);
     const Mat3 E = m.law.strain == StrainMeasure::GreenLagrange ? green_strain(G) : cauchy_strain(G);
     e += m.geo.volume[t] * energy_density(E, m.law, m.geo.scales_of(t, m.law.scales)) *
