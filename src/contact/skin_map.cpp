@@ -4,32 +4,42 @@ namespace mrsim {
 
 namespace {
 
-int moving_level(const Hierarchy& h, const SkinBinding& b, int s) {
-  for (int l = h.num_levels() - 1; l > 0; --l) {
-    const Tet& t = h.level(l).mesh->tets[b.tet[l][s]];
-    bool all = true;
-    for (int k = 0; k < 4; ++k)
-      if (b.bary[l][s][k] != 0 && h.state(l, t[k]) == NodeState::Inactive) all = false;
-    if (all) return l;
-  }
-  return 0;
+// Does level l move skin vertex s: is every vertex of its tet there with a weight not inactive?
+bool moves(const Hierarchy& h, const SkinBinding& b, int l, int s) {
+  const Tet& t = h.level(l).mesh->tets[b.tet[l][s]];
+  for (int k = 0; k < 4; ++k)
+    if (b.bary[l][s][k] != 0 && h.state(l, t[k]) == NodeState::Inactive) return false;
+  return true;
 }
 
 }  // namespace
 
+// Each vertex takes the finest level that moves it (level 0 when none does). Level by level,
+// finest first, over the vertices still undecided: each pass reads its level's binding in
+// order, where vertex by vertex every level's was read at random (at each topology change:
+// 1.4 % of liver_probe's time). The same levels.
 void SkinMap::build(const Hierarchy& h, const SkinBinding& b,
                     const std::vector<const std::vector<std::uint8_t>*>& free_point) {
   const int n = static_cast<int>(b.tet[0].size());
   h_ = &h;
   free_ = free_point;
-  level_.resize(n);
+  level_.assign(n, 0);
   source_.resize(n);
   weight_.resize(n);
+  undecided_.resize(n);
+  for (int s = 0; s < n; ++s) undecided_[s] = s;
+  for (int l = h.num_levels() - 1; l > 0; --l) {
+    std::size_t kept = 0;
+    for (const int s : undecided_)
+      if (moves(h, b, l, s))
+        level_[s] = l;
+      else
+        undecided_[kept++] = s;
+    undecided_.resize(kept);
+  }
   for (int s = 0; s < n; ++s) {
-    const int l = moving_level(h, b, s);
-    level_[s] = l;
-    source_[s] = h.level(l).mesh->tets[b.tet[l][s]];
-    weight_[s] = b.bary[l][s];
+    source_[s] = h.level(level_[s]).mesh->tets[b.tet[level_[s]][s]];
+    weight_[s] = b.bary[level_[s]][s];
   }
   // Forget the rows of the last build (the statuses changed since).
   if (static_cast<int>(begin_.size()) != n) {

@@ -46,6 +46,7 @@ class SkinMap {
   std::vector<int> level_;
   std::vector<std::array<int, 4>> source_;  // the tet's vertices at level_[s]
   std::vector<Bary> weight_;                // and their coordinates
+  std::vector<int> undecided_;              // build()'s vertices without a level yet
   const Hierarchy* h_ = nullptr;
   std::vector<const std::vector<std::uint8_t>*> free_;
 
