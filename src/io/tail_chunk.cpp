@@ -59,7 +59,7 @@ std::optional<TailChunk> TailChunk::of(hid_t file_type, std::vector<hsize_t> sha
   tail.offset_.assign(tail.shape_.size(), 0);
   if (deflate_level > 0)
     tail.deflater_ =
-        std::make_shared<ZlibDeflater>(deflate_level, runs ? Z_RLE : Z_DEFAULT_STRATEGY);
+        std::make_unique<ZlibDeflater>(deflate_level, runs ? Z_RLE : Z_DEFAULT_STRATEGY);
   return tail;
 }
 

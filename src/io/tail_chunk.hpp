@@ -49,7 +49,7 @@ class TailChunk {
   std::vector<unsigned char> bytes_;  // the chunk `chunk_`, uncompressed
   hsize_t chunk_ = kNone;
   std::vector<hsize_t> offset_;  // of the chunk in the dataset, for H5Dwrite_chunk()
-  std::shared_ptr<ZlibDeflater> deflater_;  // deflated datasets only (shared: TailChunk moves)
+  std::unique_ptr<ZlibDeflater> deflater_;  // deflated datasets only
 };
 
 }  // namespace mrsim::h5
