@@ -24,7 +24,8 @@ Vec3 corrected_laplacian(const LevelModel& m, int i, const Vec3* u) {
   Vec3 L = Vec3::Zero();
   for (int s = first; s < last; ++s) {
     const int t = m.adj.inc_tet[s];
-    const Mat3 G = s - first < kKept ? kept[s - first] : tet_gradient(m.geo.grad[t], m.geo.tets[t], u);
+    const Mat3 G =
+        s - first < kKept ? kept[s - first] : tet_gradient(m.geo.grad[t], m.geo.tets[t], u);
     L -= m.geo.volume[t] * ((G - Gbar) * m.geo.grad[t][m.adj.inc_local[s]]);
   }
   return L / m.lumped_volume[i];
