@@ -70,8 +70,8 @@ void TailChunk::write(hid_t dataset, const unsigned char* data, hsize_t first, h
     const hsize_t chunk = row / rows;
     const hsize_t end = std::min(first + count, (chunk + 1) * rows);
     if (chunk != chunk_) load(dataset, chunk, row, where);
-    std::memcpy(bytes_.data() + (row - chunk * rows) * row_bytes_, data + (row - first) * row_bytes_,
-                (end - row) * row_bytes_);
+    std::memcpy(bytes_.data() + (row - chunk * rows) * row_bytes_,
+                data + (row - first) * row_bytes_, (end - row) * row_bytes_);
     store(dataset, where);
     row = end;
   }

@@ -57,7 +57,8 @@ const json* property_node(const json& resolved, const std::string& token) {
 // The schema parsed once, in its own order; scenario_schema() converts it (a third of what a
 // second parse of the text cost every run: both are needed by every run).
 const nlohmann::ordered_json& ordered_schema() {
-  static const nlohmann::ordered_json schema = nlohmann::ordered_json::parse(embedded_schema_text());
+  static const nlohmann::ordered_json schema =
+      nlohmann::ordered_json::parse(embedded_schema_text());
   return schema;
 }
 

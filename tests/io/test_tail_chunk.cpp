@@ -111,8 +111,8 @@ TEST(TailChunk, DeflatedRowsAreTheChunksHdf5Writes) {
   const auto back = test::read_array<std::int8_t>(a, "/status");
   ASSERT_EQ(back.dims, (std::vector<hsize_t>{kFrames, kPoints}));
   for (int f = 0; f < kFrames; ++f)
-    EXPECT_TRUE(std::equal(back.values.begin() + f * kPoints, back.values.begin() + (f + 1) * kPoints,
-                           status_row(f, kPoints).begin()))
+    EXPECT_TRUE(std::equal(back.values.begin() + f * kPoints,
+                           back.values.begin() + (f + 1) * kPoints, status_row(f, kPoints).begin()))
         << "frame " << f;
 }
 
@@ -146,8 +146,8 @@ TEST(TailChunk, RunLengthDeflatedRowsReadBackAndAreNoLarger) {
   const auto back = test::read_array<std::int8_t>(file, "/status");
   ASSERT_EQ(back.dims, (std::vector<hsize_t>{kFrames, kPoints}));
   for (int f = 0; f < kFrames; ++f)
-    EXPECT_TRUE(std::equal(back.values.begin() + f * kPoints, back.values.begin() + (f + 1) * kPoints,
-                           status_row(f, kPoints).begin()))
+    EXPECT_TRUE(std::equal(back.values.begin() + f * kPoints,
+                           back.values.begin() + (f + 1) * kPoints, status_row(f, kPoints).begin()))
         << "frame " << f;
 }
 
