@@ -28,6 +28,21 @@ class NeighbourSlots {
 
 namespace {
 
+// fn(e, V_t, ∇N_i, ∇N_j) for every other vertex j of every tet t at point i, in the incidence
+// order both sums below follow; e is j's entry in i's row, counted from the row's start (`slot`
+// set for i).
+template <class Fn>
+void visit_row(const TetGeometry& geo, const PointAdjacency& adj, const NeighbourSlots& slot,
+               int i, Fn&& fn) {
+  const int first = adj.nbr_start[i];
+  for (int s = adj.inc_start[i]; s < adj.inc_start[i + 1]; ++s) {
+    const int t = adj.inc_tet[s];
+    const int a = adj.inc_local[s];
+    for (int b = 0; b < 4; ++b)
+      if (b != a) fn(slot[geo.tets[t][b]] - first, geo.volume[t], geo.grad[t][a], geo.grad[t][b]);
+  }
+}
+
 // Without coefficients only the weights are wanted: tr(B_ij) needs B's diagonal, not A. Each
 // diagonal entry is summed by the same operations as in the whole block, in the same order, and
 // the trace as Eigen's (d0 + d1) + d2: the same bits, without filling and adding 3×3 blocks.
@@ -39,19 +54,11 @@ void laplacian_weights_only(const TetGeometry& geo, const PointAdjacency& adj, i
     const int first = adj.nbr_start[i], degree = adj.nbr_start[i + 1] - first;
     std::fill_n(diagonal.begin(), degree, std::array<double, 3>{0, 0, 0});
     slot.set(adj, i);
-    for (int s = adj.inc_start[i]; s < adj.inc_start[i + 1]; ++s) {
-      const int t = adj.inc_tet[s];
-      const int a = adj.inc_local[s];
-      const double V = geo.volume[t];
-      const Vec3& ga = geo.grad[t][a];
-      for (int b = 0; b < 4; ++b) {
-        if (b == a) continue;
-        std::array<double, 3>& d = diagonal[slot[geo.tets[t][b]] - first];
-        const Vec3& gb = geo.grad[t][b];
-        const double dot = ga.dot(gb);
-        for (int c = 0; c < 3; ++c) d[c] += V * (gb[c] * ga[c] + dot);
-      }
-    }
+    visit_row(geo, adj, slot, i, [&](int e, double V, const Vec3& ga, const Vec3& gb) {
+      std::array<double, 3>& d = diagonal[e];
+      const double dot = ga.dot(gb);
+      for (int c = 0; c < 3; ++c) d[c] += V * (gb[c] * ga[c] + dot);
+    });
     slot.reset(adj, i);
     for (int k = 0; k < degree; ++k)
       weights[first + k] = -((diagonal[k][0] + diagonal[k][1]) + diagonal[k][2]) / 4.0;
@@ -83,19 +90,10 @@ CombinedEdges combined_edge_operators(const TetGeometry& geo, const PointAdjacen
     std::fill_n(row_a.begin(), degree, Mat3::Zero());
     std::fill_n(row_b.begin(), degree, Mat3::Zero());
     slot.set(adj, i);
-    for (int s = adj.inc_start[i]; s < adj.inc_start[i + 1]; ++s) {
-      const int t = adj.inc_tet[s];
-      const int a = adj.inc_local[s];
-      const double V = geo.volume[t];
-      const Vec3& ga = geo.grad[t][a];
-      for (int b = 0; b < 4; ++b) {
-        if (b == a) continue;
-        const int e = slot[geo.tets[t][b]] - first;
-        const Vec3& gb = geo.grad[t][b];
-        row_a[e].noalias() += V * ga * gb.transpose();
-        row_b[e].noalias() += V * (gb * ga.transpose() + ga.dot(gb) * Mat3::Identity());
-      }
-    }
+    visit_row(geo, adj, slot, i, [&](int e, double V, const Vec3& ga, const Vec3& gb) {
+      row_a[e].noalias() += V * ga * gb.transpose();
+      row_b[e].noalias() += V * (gb * ga.transpose() + ga.dot(gb) * Mat3::Identity());
+    });
     slot.reset(adj, i);
     for (int k = 0; k < degree; ++k) {
       for (size_t c = 0; c < coefficients.size(); ++c)

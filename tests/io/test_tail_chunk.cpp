@@ -53,6 +53,16 @@ std::vector<unsigned char> stored_chunk(hid_t dataset, hsize_t row, std::size_t 
   return out;
 }
 
+// The dataset holds status_row(f) for each of its `frames` rows, as written.
+void expect_status_rows(hid_t file, const char* path, int frames, std::size_t points) {
+  const auto back = test::read_array<std::int8_t>(file, path);
+  ASSERT_EQ(back.dims, (std::vector<hsize_t>{static_cast<hsize_t>(frames), points}));
+  for (int f = 0; f < frames; ++f)
+    EXPECT_TRUE(std::equal(back.values.begin() + f * points,
+                           back.values.begin() + (f + 1) * points, status_row(f, points).begin()))
+        << "frame " << f;
+}
+
 TEST(ZlibDeflater, GivesCompress2sBytesStreamAfterStream) {
   h5::ZlibDeflater deflater(4);
   for (int frame = 0; frame < 5; ++frame) {
@@ -108,12 +118,7 @@ TEST(TailChunk, DeflatedRowsAreTheChunksHdf5Writes) {
     EXPECT_LT(mine.size(), kPoints / 4) << "frame " << f << " is not compressed";
     EXPECT_EQ(mine, stored_chunk(db, f, 2)) << "frame " << f;
   }
-  const auto back = test::read_array<std::int8_t>(a, "/status");
-  ASSERT_EQ(back.dims, (std::vector<hsize_t>{kFrames, kPoints}));
-  for (int f = 0; f < kFrames; ++f)
-    EXPECT_TRUE(std::equal(back.values.begin() + f * kPoints,
-                           back.values.begin() + (f + 1) * kPoints, status_row(f, kPoints).begin()))
-        << "frame " << f;
+  expect_status_rows(a, "/status", kFrames, kPoints);
 }
 
 // The status rows of log.h5 are deflated with zlib's run-length strategy: HDF5 reads them back
@@ -143,12 +148,7 @@ TEST(TailChunk, RunLengthDeflatedRowsReadBackAndAreNoLarger) {
     EXPECT_NE(r, p) << "frame " << f << ": not the run-length strategy's stream";
     EXPECT_LE(r.size(), p.size()) << "frame " << f;
   }
-  const auto back = test::read_array<std::int8_t>(file, "/status");
-  ASSERT_EQ(back.dims, (std::vector<hsize_t>{kFrames, kPoints}));
-  for (int f = 0; f < kFrames; ++f)
-    EXPECT_TRUE(std::equal(back.values.begin() + f * kPoints,
-                           back.values.begin() + (f + 1) * kPoints, status_row(f, kPoints).begin()))
-        << "frame " << f;
+  expect_status_rows(file, "/status", kFrames, kPoints);
 }
 
 ExtendibleSpec row_spec(hid_t file_type) {
