@@ -1,5 +1,6 @@
 #include "io/zlib_deflater.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace mrsim::h5 {
@@ -13,6 +14,8 @@ ZlibDeflater::ZlibDeflater(int level, int strategy) {
 ZlibDeflater::~ZlibDeflater() { deflateEnd(&stream_); }
 
 std::span<const unsigned char> ZlibDeflater::compress(std::span<const unsigned char> data) {
+  if (has_last_ && std::ranges::equal(data, last_in_)) return {out_.data(), last_out_};
+  has_last_ = false;  // until this call's stream is whole
   if (deflateReset(&stream_) != Z_OK) throw std::runtime_error("zlib: cannot reset deflate");
   out_.resize(deflateBound(&stream_, static_cast<uLong>(data.size())));
   // zlib's interface takes a non-const input pointer; it does not write through it.
@@ -23,7 +26,10 @@ std::span<const unsigned char> ZlibDeflater::compress(std::span<const unsigned c
   // deflateBound() is room for the whole stream, so one call finishes it.
   if (deflate(&stream_, Z_FINISH) != Z_STREAM_END)
     throw std::runtime_error("zlib: deflate did not finish its stream");
-  return {out_.data(), out_.size() - stream_.avail_out};
+  last_in_.assign(data.begin(), data.end());
+  last_out_ = out_.size() - stream_.avail_out;
+  has_last_ = true;
+  return {out_.data(), last_out_};
 }
 
 }  // namespace mrsim::h5

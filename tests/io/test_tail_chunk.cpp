@@ -77,6 +77,33 @@ TEST(ZlibDeflater, GivesCompress2sBytesStreamAfterStream) {
   }
 }
 
+// A row equal to the last one gives its stream again (not deflated anew); a row changed in the
+// same buffer, or one of another length, is deflated: each is compress2()'s stream of its bytes.
+TEST(ZlibDeflater, RepeatedRowsGiveTheirStreamAndChangedRowsANewOne) {
+  const auto bytes = [](const std::vector<std::int8_t>& row) {
+    return std::span<const unsigned char>(reinterpret_cast<const unsigned char*>(row.data()),
+                                          row.size());
+  };
+  const auto stream = [&](h5::ZlibDeflater& deflater, const std::vector<std::int8_t>& row) {
+    const auto got = deflater.compress(bytes(row));
+    return std::vector<unsigned char>(got.begin(), got.end());
+  };
+  const auto fresh = [&](const std::vector<std::int8_t>& row) {
+    h5::ZlibDeflater once(4, Z_RLE);
+    return stream(once, row);
+  };
+  h5::ZlibDeflater deflater(4, Z_RLE);
+  std::vector<std::int8_t> row = status_row(0, 3386);
+  const std::vector<unsigned char> first = stream(deflater, row);
+  EXPECT_EQ(first, fresh(row));
+  EXPECT_EQ(stream(deflater, row), first);  // the same bytes again
+  row[1700] = static_cast<std::int8_t>(row[1700] + 1);  // one status changed, same buffer
+  EXPECT_EQ(stream(deflater, row), fresh(row));
+  EXPECT_NE(stream(deflater, row), first);
+  row.pop_back();  // a shorter row whose bytes are a prefix of the last one
+  EXPECT_EQ(stream(deflater, row), fresh(row));
+}
+
 // The deflated status rows of a fine level: each chunk's stored bytes are those HDF5's deflate
 // filter stores through H5Dwrite(), and they read back as written.
 TEST(TailChunk, DeflatedRowsAreTheChunksHdf5Writes) {
