@@ -1,26 +1,26 @@
 #include "hierarchy/ghost_force_transfer.hpp"
 
+#include "hierarchy/barycentric_rows.hpp"
+
 namespace mrsim {
 
 namespace {
 
 // Each ghost's sources straight from the links (Embedding::source), not through its tet.
-void to_tets(const std::vector<int>& ghosts, const Embedding& emb, const Vec3* ghost_force,
-             Vec3* source_force) {
-  for (int g : ghosts) {
-    const std::array<int, 4>& t = emb.source[g];
-    for (int k = 0; k < 4; ++k) source_force[t[k]] += emb.bary[g][k] * ghost_force[g];
-  }
+void to_tets(RowBuild build, const std::vector<int>& ghosts, const Embedding& emb,
+             const Vec3* ghost_force, Vec3* source_force) {
+  scatter_rows(build, ghosts, emb.source.data(), emb.bary.data(), ghost_force, source_force);
 }
 
 // iface(l), sub(l): the level's interface and subdivided ghosts to transfer.
 template <class Iface, class Sub>
 void transfer(const Hierarchy& h, Iface iface, Sub sub, std::vector<Vec3*>& f) {
   const int L = h.num_levels();
+  const RowBuild build = row_build();
   for (int l = L - 1; l >= 1; --l)
-    to_tets(iface(l), h.links(l).parent_tet, f[l], f[l - 1]);
+    to_tets(build, iface(l), h.links(l).parent_tet, f[l], f[l - 1]);
   for (int l = 0; l + 1 < L; ++l)
-    to_tets(sub(l), h.links(l).child_tet, f[l], f[l + 1]);
+    to_tets(build, sub(l), h.links(l).child_tet, f[l], f[l + 1]);
 }
 
 }  // namespace
