@@ -175,7 +175,8 @@ bool edge_matrices_needed(const MaterialLaw& law, bool semi_implicit) {
 }
 
 LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law, bool semi_implicit,
-                             const std::vector<std::uint8_t>& held, const LevelSpectra* known) {
+                             const std::vector<std::uint8_t>& held, const LevelSpectra* known,
+                             LevelArrays* arrays) {
   LevelModel m;
   m.mesh = &mesh;
   m.law = law;
@@ -183,7 +184,8 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law, bool s
     throw std::logic_error("build_level_model: a held mask of another level");
   if (std::find(held.begin(), held.end(), 1) != held.end()) m.held = held;
   m.geo = build_tet_geometry(mesh, &law);
-  m.adj = build_point_adjacency(static_cast<int>(mesh.points.size()), mesh.tets);
+  m.adj = arrays ? std::move(arrays->adj)
+                 : build_point_adjacency(static_cast<int>(mesh.points.size()), mesh.tets);
   m.mass = lumped_masses(m.geo, m.adj, law.density);
   m.lumped_volume = lumped_masses(m.geo, m.adj, 1.0);
   // K = λA + μB and D = φA + ψB of the isotropic law come with the Laplacian weights; a
@@ -192,22 +194,27 @@ LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law, bool s
   // Per-tet tensors (object.calibration: per_tet) go the orthotropic way, which takes each tet's
   // scales (TetGeometry::scales); the weights stay the geometric ones.
   const bool isotropic = law.scales.isotropic() && !law.tet_tensors;
-  std::vector<std::array<double, 2>> coefficients;
-  if (matrices && isotropic) coefficients.push_back({law.lambda, law.mu});
-  if (matrices && isotropic && law.damped()) coefficients.push_back({law.phi, law.psi});
-  CombinedEdges edges = combined_edge_operators(m.geo, m.adj, coefficients);
-  m.laplacian_w = std::move(edges.laplacian_w);
-  if (!matrices) {
-    // K and D would only feed the spectra, which are known.
-  } else if (isotropic) {
-    m.K = std::move(edges.matrices[0]);
-    if (law.damped()) m.D = std::move(edges.matrices[1]);
+  if (arrays && !matrices) {
+    m.laplacian_w = std::move(arrays->laplacian_w);  // the weights alone: the same bits
   } else {
-    m.K = orthotropic_edge_matrices(m.geo, m.adj, law.lambda, law.mu, law.scales);
-    if (law.damped()) m.D = orthotropic_edge_matrices(m.geo, m.adj, law.phi, law.psi, law.scales);
+    std::vector<std::array<double, 2>> coefficients;
+    if (matrices && isotropic) coefficients.push_back({law.lambda, law.mu});
+    if (matrices && isotropic && law.damped()) coefficients.push_back({law.phi, law.psi});
+    CombinedEdges edges = combined_edge_operators(m.geo, m.adj, coefficients);
+    m.laplacian_w = std::move(edges.laplacian_w);
+    if (!matrices) {
+      // K and D would only feed the spectra, which are known.
+    } else if (isotropic) {
+      m.K = std::move(edges.matrices[0]);
+      if (law.damped()) m.D = std::move(edges.matrices[1]);
+    } else {
+      m.K = orthotropic_edge_matrices(m.geo, m.adj, law.lambda, law.mu, law.scales);
+      if (law.damped())
+        m.D = orthotropic_edge_matrices(m.geo, m.adj, law.phi, law.psi, law.scales);
+    }
   }
   edge_lengths(m);
-  m.bounds = tet_energy_bounds(m.geo, law);
+  m.bounds = arrays ? std::move(arrays->bounds) : tet_energy_bounds(m.geo, law);
   m.star = star_inertia(m.adj, m.bounds, m.mass);
   apply_spectra(m, semi_implicit, known ? *known : measured_spectra(m, semi_implicit));
   return m;

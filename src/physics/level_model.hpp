@@ -71,10 +71,22 @@ struct LevelModel {
 /// points, which the step has to keep stable. `known`: the spectra of this mesh, law, held mask
 /// and integrator family measured before (level_spectra() of an earlier build): no Lanczos
 /// run, and no edge matrices where nothing else needs them.
+/// What a level's model computes from its mesh and law alone at most cost after the spectra:
+/// the adjacency, the Laplacian weights and the tets' energy bounds (liver_probe's four levels:
+/// ~26 M of a warm set-up's ~120 M instructions). A run keeps them for the next
+/// (simulation/level_array_cache.hpp), as build_level_model() computes them, bit for bit.
+struct LevelArrays {
+  PointAdjacency adj;
+  std::vector<double> laplacian_w;
+  TetEnergyBounds bounds;
+};
+
+/// `known`: the spectra, not measured. `arrays`: taken (moved from), not computed; they must be
+/// what this build computes for `mesh` and `law`.
 LevelModel build_level_model(const TetMesh& mesh, const MaterialLaw& law,
                              bool semi_implicit = false,
                              const std::vector<std::uint8_t>& held = {},
-                             const LevelSpectra* known = nullptr);
+                             const LevelSpectra* known = nullptr, LevelArrays* arrays = nullptr);
 
 /// What the level's Lanczos runs measured (or were given), as build_level_model() takes it.
 LevelSpectra level_spectra(const LevelModel& m);

@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "simulation/level_array_cache.hpp"
 #include "simulation/result_cache.hpp"
 
 namespace mrsim {
@@ -81,9 +82,16 @@ LevelModel cached_level_model(const TetMesh& mesh, const MaterialLaw& law, bool 
   const std::string key = spectrum_key(mesh, law, semi_implicit, held);
   const std::optional<LevelSpectra> known = read(key, mesh);
   if (reused) *reused = known.has_value();
-  if (known) return build_level_model(mesh, law, semi_implicit, held, &*known);
+  if (known) {
+    std::optional<LevelArrays> arrays = read_level_arrays(key, mesh);
+    LevelModel m =
+        build_level_model(mesh, law, semi_implicit, held, &*known, arrays ? &*arrays : nullptr);
+    if (!arrays) write_level_arrays(key, m);
+    return m;
+  }
   LevelModel m = build_level_model(mesh, law, semi_implicit, held);
   write_cached_result(file_of(key), key, to_json(level_spectra(m), mesh), "level spectra");
+  write_level_arrays(key, m);
   return m;
 }
 
