@@ -18,7 +18,7 @@ empties it before each run, as a hierarchy's very first run.
 
     /usr/bin/python3 bench/adaptive_vs_uniform.py [--binary build/mrsim]
         [--scenario scenarios/liver_probe.yaml] [--repeats 3] [--json out.json] [--callgrind]
-        [--cache warm|cold] [--no-frames]
+        [--cache warm|cold] [--no-frames] [--matched]
 
 After the pairs, the adaptive run is also timed as bundled, with its VTK frames written (unless
 --no-frames): its real-time factor then, and the frames' own wall time. For both, the frames
@@ -26,6 +26,12 @@ that took longer than frame_dt of wall time (log.h5 /frames/wall_time_parts, out
 and the slowest: a real-time loop misses those, whatever the average. The framed runs go into one
 folder, as a user re-runs a scenario: from the second on, each writes its frames over the files
 of the one before (io/file_recycler.hpp), so the median is a re-run's, not a first run's.
+
+--matched also times pairs whose adaptive side is K runs back to back, K the ratio of the two
+kinds' median CPU (liver_probe: about 15), so that it spans the seconds the uniform run beside
+it spans: on a shared host the load moves over seconds, and a 0.3-s run samples one moment of
+it where a 4.7-s run averages several. Each pair's ratio is the mean of its K runs over the
+uniform run; the median of those is printed. Every run counts (a mean, not a fastest).
 
 --callgrind also runs each kind once under valgrind's callgrind and prints the instructions each
 executes (user space, the whole process) and their ratio: a count that does not move with the
@@ -128,6 +134,9 @@ def main():
                     help="also count each kind's instructions under valgrind (slow, steady)")
     ap.add_argument("--no-frames", dest="frames", action="store_false",
                     help="leave out the adaptive runs with the scenario's VTK frames written")
+    ap.add_argument("--matched", action="store_true",
+                    help="also time pairs in which the adaptive side is as many back-to-back runs"
+                         " as take the uniform run's CPU (slow: twice the pairs' time)")
     ap.add_argument("--cache", choices=("warm", "cold"), default="warm",
                     help="the levels' spectra cached by an earlier run (warm) or measured (cold)")
     a = ap.parse_args()
@@ -149,6 +158,27 @@ def main():
                 with open(os.path.join(outs["adaptive"], "scenario.yaml")) as f:
                     uniform.append("time.substeps=%d" % yaml.safe_load(f)["time"]["substeps"])
             runs["uniform"].append(timed_run(a.binary, a.scenario, outs["uniform"], uniform))
+        # Time-matched pairs: a short run samples a minute of this host's load, the uniform run
+        # several seconds of it; K adaptive runs back to back (K: the CPU ratio of the medians
+        # above, rounded) span as long as the uniform run beside them, in alternating order,
+        # and each pair's ratio is their mean over it. Every run counts, none is dropped.
+        matched = []
+        if a.matched:
+            cpu_a = statistics.median(c for c, _, _ in runs["adaptive"])
+            cpu_u = statistics.median(c for c, _, _ in runs["uniform"])
+            batch = max(1, round(cpu_u / cpu_a))
+            for i in range(a.repeats):
+                def adaptive_batch():
+                    return statistics.mean(
+                        timed_run(a.binary, a.scenario, outs["adaptive"], [])[0]
+                        for _ in range(batch))
+                if i % 2 == 0:
+                    un = timed_run(a.binary, a.scenario, outs["uniform"], uniform)[0]
+                    ad = adaptive_batch()
+                else:
+                    ad = adaptive_batch()
+                    un = timed_run(a.binary, a.scenario, outs["uniform"], uniform)[0]
+                matched.append((ad, un))
         # The adaptive run as bundled, its VTK frames written: what a user who runs the scenario
         # sees (the frames' own time is /frames/wall_time_parts "output").
         framed = []
@@ -225,6 +255,17 @@ def main():
     print("  median of the %d pairs' own ratios: %.3f (%.2f x the tet ratio)"
           % (a.repeats, result["cpu_pair_ratio"],
              result["cpu_pair_ratio"] / result["tet_update_ratio"]))
+    if matched:
+        result["matched_batch"] = max(1, round(cpu["uniform"] / cpu["adaptive"]))
+        result["matched_pair_ratio"] = statistics.median(ad / un for ad, un in matched)
+        result["matched_adaptive_s"] = statistics.median(ad for ad, _ in matched)
+        result["matched_uniform_s"] = statistics.median(un for _, un in matched)
+        print("  time-matched pairs (%d; each the mean of %d adaptive runs back to back against"
+              " one uniform run): adaptive %.3f s, uniform %.2f s; median of the pairs' ratios"
+              " %.3f (%.2f x the tet ratio)"
+              % (len(matched), result["matched_batch"], result["matched_adaptive_s"],
+                 result["matched_uniform_s"], result["matched_pair_ratio"],
+                 result["matched_pair_ratio"] / result["tet_update_ratio"]))
     if "tool_force_max_difference" in result:
         print("  tool force: peak %.4f N uniform, peak differs by %.2f %%, worst step by %.2f %%"
               " of the peak (%d samples)"
