@@ -4,9 +4,10 @@
 //   interpolate: target[p] = b₀ s[i₀] + b₁ s[i₁] + b₂ s[i₂] + b₃ s[i₃], displacement and velocity;
 //   scatter:     to[i_k] += b_k from[p], k = 0..3 (the transpose: the ghosts' forces).
 // Built twice, with the same bits: baseline x86-64 (GCC pairs x,y in SSE2 and does z alone) and
-// AVX2 (x,y,z in one register; no FMA contraction, the same products and sums in the same
-// order). The AVX2 build runs where the force kernel runs a wide build (MRSIM_KERNEL): ~100
-// instructions per ghost and step were 7 % of liver_probe's adaptive run (issue 17).
+// AVX2 (barycentric_rows_avx2.cpp: the interpolation holds x,y,z in one register, the scatter
+// x,y and z apart as they are stored; no FMA contraction, the same products and sums in the
+// same order). The AVX2 build runs where the force kernel runs a wide build (MRSIM_KERNEL):
+// ~100 instructions per ghost and step were 7 % of liver_probe's adaptive run (issue 17).
 #include <array>
 #include <span>
 

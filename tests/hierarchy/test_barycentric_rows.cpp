@@ -107,12 +107,12 @@ TEST(BarycentricRows, Avx2BuildGivesTheBaselineBits) {
                      r.sv.data(), au.data(), av.data());
     EXPECT_TRUE(same_bits(bu, au)) << "seed " << seed;
     EXPECT_TRUE(same_bits(bv, av)) << "seed " << seed;
-    // The scatter adds into what is there, and sources repeat across rows: order matters.
+    // The scatter adds into what is there, and sources repeat across rows: order matters. The
+    // rows' own values (one per target point): the interpolated ones, of every magnitude.
     std::vector<Vec3> bt = r.sv, at = r.sv;
-    scatter_rows(RowBuild::Baseline, r.points, r.source.data(), r.bary.data(), r.su.data(),
+    scatter_rows(RowBuild::Baseline, r.points, r.source.data(), r.bary.data(), bu.data(),
                  bt.data());
-    scatter_rows(RowBuild::Avx2, r.points, r.source.data(), r.bary.data(), r.su.data(),
-                 at.data());
+    scatter_rows(RowBuild::Avx2, r.points, r.source.data(), r.bary.data(), bu.data(), at.data());
     EXPECT_TRUE(same_bits(bt, at)) << "seed " << seed;
     EXPECT_FALSE(same_bits(bt, r.sv));
   }
