@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
 
 #include "hierarchy/barycentric_rows.hpp"
+#include "support/same_bits.hpp"
 
 using namespace mrsim;
 
@@ -50,9 +50,7 @@ Rows random_rows(int targets, int sources, unsigned seed) {
   return r;
 }
 
-bool same_bits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
-}
+using test::same_bits;
 
 bool runs_avx2() { return row_build() == RowBuild::Avx2; }
 

@@ -3,10 +3,10 @@
 // nothing else needs them, without K and D.
 #include <gtest/gtest.h>
 
-#include <cstring>
 
 #include "mesh/box_mesh.hpp"
 #include "physics/level_model.hpp"
+#include "support/same_bits.hpp"
 
 using namespace mrsim;
 
@@ -35,12 +35,7 @@ MaterialLaw damped(StrainMeasure strain) {
   return law;
 }
 
-template <class T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
-}
-
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using test::same_bits;
 
 void expect_same_scales(const LevelModel& a, const LevelModel& b) {
   for (auto [x, y] : {std::pair{a.stiffness_spectrum, b.stiffness_spectrum},

@@ -5,34 +5,23 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <functional>
 #include <limits>
 #include <string>
 
-#include "mesh/box_mesh.hpp"
 #include "simulation/cache_folder.hpp"
 #include "simulation/level_array_cache.hpp"
+#include "simulation/small_level.hpp"
 #include "simulation/spectrum_cache.hpp"
+#include "support/same_bits.hpp"
 
 using namespace mrsim;
 
 namespace {
 
-TetMesh box() { return make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.03, 0.02), 5, 2, 2); }
-
-MaterialLaw law() {
-  MaterialLaw l;
-  l.lambda = 4.0e4;
-  l.mu = 1.0e4;
-  l.psi = 5;
-  return l;
-}
-
-template <class T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
-}
+TetMesh box() { return test::small_box(); }
+MaterialLaw law() { return test::damped_law(); }
+using test::same_bits;
 
 void expect_same_model(const LevelModel& a, const LevelModel& b) {
   EXPECT_EQ(a.adj.nbr_start, b.adj.nbr_start);

@@ -10,24 +10,18 @@
 #include <filesystem>
 #include <fstream>
 
-#include "mesh/box_mesh.hpp"
 #include "simulation/cache_folder.hpp"
 #include "simulation/result_cache.hpp"
+#include "simulation/small_level.hpp"
 #include "simulation/spectrum_cache.hpp"
+#include "support/same_bits.hpp"
 
 using namespace mrsim;
 
 namespace {
 
-TetMesh box() { return make_box_mesh(Vec3(0, 0, 0), Vec3(0.1, 0.03, 0.02), 5, 2, 2); }
-
-MaterialLaw law() {
-  MaterialLaw l;
-  l.lambda = 4.0e4;
-  l.mu = 1.0e4;
-  l.psi = 5;
-  return l;
-}
+TetMesh box() { return test::small_box(); }
+MaterialLaw law() { return test::damped_law(); }
 
 std::vector<std::uint8_t> held(const TetMesh& mesh) {
   std::vector<std::uint8_t> h(mesh.points.size(), 0);
@@ -35,7 +29,7 @@ std::vector<std::uint8_t> held(const TetMesh& mesh) {
   return h;
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using test::same_bits;
 
 // n results <prefix><k><ext> of `size` bytes (sparse: no disk) in `dir`, the k-th written
 // `hours` − k hours ago: the oldest first.
