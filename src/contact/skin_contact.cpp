@@ -50,6 +50,7 @@ SkinContact::SkinContact(Skin skin, SkinBinding binding, std::vector<Tool> tools
 void SkinContact::remap(const Hierarchy& h,
                         const std::vector<const std::vector<std::uint8_t>*>& free_point) {
   map_.build(h, binding_, free_point);
+  skin_version_ = 0;
 }
 
 // A skin vertex is near tool k over [t0, t1] when, at its current position x, it is within the
@@ -78,22 +79,27 @@ void SkinContact::near_tool(int k, double t0, double t1, const std::vector<Vec3>
 
 // The skin's positions and largest speed, once for all tools.
 void SkinContact::near_tools(double t0, double t1, const std::vector<LevelFields>& fields,
-                             std::vector<std::vector<int>>& out) const {
-  const int n = map_.size();
-  double speed = 0;
-  std::vector<Vec3> x(n);
-  for (int s = 0; s < n; ++s) {
-    Vec3 u, v;
-    map_.interpolate(s, fields, u, v);
-    x[s] = skin_.rest[s] + u;
-    speed = std::max(speed, v.norm());
+                             std::vector<std::vector<int>>& out, std::uint64_t version) const {
+  if (version == 0 || version != skin_version_) {
+    const int n = map_.size();
+    double speed = 0;
+    skin_x_.resize(n);
+    for (int s = 0; s < n; ++s) {
+      Vec3 u, v;
+      map_.interpolate(s, fields, u, v);
+      skin_x_[s] = skin_.rest[s] + u;
+      speed = std::max(speed, v.norm());
+    }
+    skin_speed_ = speed;
+    skin_version_ = version;
   }
   out.resize(tools_.size());
-  for (int k = 0; k < num_tools(); ++k) near_tool(k, t0, t1, x, speed, out[k]);
+  for (int k = 0; k < num_tools(); ++k) near_tool(k, t0, t1, skin_x_, skin_speed_, out[k]);
 }
 
-void SkinContact::begin_frame(double t0, double t1, const std::vector<LevelFields>& fields) {
-  near_tools(t0, t1, fields, candidates_);
+void SkinContact::begin_frame(double t0, double t1, const std::vector<LevelFields>& fields,
+                              std::uint64_t version) {
+  near_tools(t0, t1, fields, candidates_, version);
 }
 
 void SkinContact::restore_candidates(std::vector<std::vector<int>> candidates) {

@@ -38,12 +38,16 @@ class SkinContact {
 
   /// After every topology change (which active points move the skin).
   void remap(const Hierarchy& h, const std::vector<const std::vector<std::uint8_t>*>& free_point);
-  /// Broad phase for the frame [t0, t1] at the current state.
-  void begin_frame(double t0, double t1, const std::vector<LevelFields>& fields);
+  /// Broad phase for the frame [t0, t1] at the current state (`version`: see near_tools()).
+  void begin_frame(double t0, double t1, const std::vector<LevelFields>& fields,
+                   std::uint64_t version = 0);
   /// For every tool k, the skin vertices it may reach during [t0, t1] (out[k], sorted;
-  /// O(skin vertices × tools)).
+  /// O(skin vertices × tools)). `version` names the state of `fields` (0: none): a call with
+  /// the version of the last one reuses its skin positions and speed instead of interpolating
+  /// them again (the refinement's look-ahead and the next frame's broad phase see the same
+  /// state when no step or topology change comes between them).
   void near_tools(double t0, double t1, const std::vector<LevelFields>& fields,
-                  std::vector<std::vector<int>>& out) const;
+                  std::vector<std::vector<int>>& out, std::uint64_t version = 0) const;
   /// Removes the forces of the last apply() from `external` (per level, N).
   void clear(const std::vector<Vec3*>& external);
   /// Contact forces at time t for the current state, added to the active points' `external`
@@ -88,6 +92,10 @@ class SkinContact {
   std::vector<std::vector<double>> stiffness_;  // per tool, per skin vertex (Pa/m)
   SkinPenalty penalty_;
   std::vector<std::vector<int>> candidates_;  // per tool, skin vertices
+  // The skin's positions and largest speed at state skin_version_ (0: none; remap() drops them).
+  mutable std::vector<Vec3> skin_x_;
+  mutable double skin_speed_ = 0;
+  mutable std::uint64_t skin_version_ = 0;
   std::vector<int> touched_level_, touched_point_;  // where the last forces went
   std::vector<int> forced_;                          // skin vertices with a force
   std::vector<Vec3> vertex_force_;

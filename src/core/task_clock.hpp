@@ -1,7 +1,8 @@
 #pragma once
 // Wall time per task of a run, as the thesis reports it (§5: model 60 %, surface 5 %,
 // collision 20 %, display 15 %): log.h5 /frames/wall_time_parts, summary.json "time_shares"
-// (docs/output.md). A few clock reads per step and level, never per point.
+// (docs/output.md). A few clock reads per step (the force pass of all levels is one), never per
+// point.
 #include <array>
 #include <chrono>
 #include <cstddef>

@@ -82,7 +82,6 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
         s.v[i] =
             setup.initial_velocity + setup.initial_angular_velocity.cross(meshes[l]->points[i] - c);
     forces_.push_back(std::make_unique<LevelForceField>(*models_[l], setup.gravity));
-    forces_[l]->set_clock(&tasks_);
     if (transfer_)
       forces_[l]->couple(hierarchy_.get(), lists_.get(), l);
     else
@@ -130,6 +129,7 @@ HierarchicalSimulation::HierarchicalSimulation(const std::vector<const TetMesh*>
   update_inertia();
   stepper_ = std::make_unique<Stepper>(
       setup.integrator, std::move(blocks), [this] { after_positions(); }, std::move(gathered));
+  stepper_->set_clock(&tasks_);
   dt_ = setup.dt;
   steps_per_frame_ = base_steps_per_frame_ = setup.steps_per_frame;
   global_frame_ = setup.dt * setup.steps_per_frame;
@@ -169,7 +169,7 @@ const std::vector<TetLocator>& HierarchicalSimulation::locators() const {
 // After the point sets changed: Störmer–Verlet needs the force at the current state. With time
 // levels every integrator takes kick-drift steps (no saved half-kick force); one evaluation of
 // every served point gives the outputs their forces at the frame's time.
-void HierarchicalSimulation::restart_integrator() {
+void HierarchicalSimulation::restart_integrator() {  // forces only: the fields' version stays
   if (time_levels_)
     compute_forces();
   else
@@ -251,6 +251,7 @@ void HierarchicalSimulation::run_w_cycle(std::vector<TimeLevelChange>& changes) 
     if (contact_ && s.tick > 0) contact_->record_sample();
     stepper_->kick_step(tick);
     ++steps_;
+    changed();
     ta.after_step(s, changes);
   }
   drift_all(drifted, wc.ticks_per_frame(), frame_start, tick);
@@ -308,6 +309,7 @@ void HierarchicalSimulation::run_steps(int steps) {
     stepper_->step(dt_);
     time_ = clock_;
     ++steps_;
+    changed();
     if (contact_) contact_->record_sample();
   }
 }
@@ -320,7 +322,7 @@ void HierarchicalSimulation::begin_frame(double duration) {
   if (contact_) {
     {
       const TaskTimer timer(&tasks_, Task::Contact);
-      contact_->begin_frame(time_, time_ + duration, fields_);
+      contact_->begin_frame(time_, time_ + duration, fields_, version_);
     }
     update_external(time_);
   }
@@ -343,7 +345,7 @@ void HierarchicalSimulation::contact_region(double lookahead,
   out.clear();
   if (!contact_) return;
   std::vector<std::vector<int>> near;
-  contact_->near_tools(time_, time_ + lookahead, fields_, near);
+  contact_->near_tools(time_, time_ + lookahead, fields_, near, version_);
   for (const std::vector<int>& vertices : near)
     for (int s : vertices)
       for (const ActiveTerm& t : contact_->map().row(s))
@@ -371,6 +373,7 @@ void HierarchicalSimulation::skin_state(std::vector<Vec3>& u, std::vector<Vec3>&
 
 // Positions (and with them the load time) moved to the end of the step under way.
 void HierarchicalSimulation::after_positions() {
+  changed();
   refresh_ghosts();
   if (!external_.empty()) update_external(clock_);
 }
@@ -456,6 +459,7 @@ void HierarchicalSimulation::visit_loads(
 // map is zero, so it never carries a stale interpolated value into a split (a prestress) and
 // its force goes to the support, not to its sources.
 void HierarchicalSimulation::refresh_ghosts() {
+  changed();
   const TaskTimer timer(&tasks_, Task::Ghosts);
   interpolate_ghosts(fields_);
 }
@@ -495,8 +499,11 @@ void HierarchicalSimulation::refile_fixed_ghosts() {
 }
 
 void HierarchicalSimulation::compute_forces() {
-  for (int l = 0; l < num_levels(); ++l)
-    forces_[l]->evaluate(states_[l].u.data(), states_[l].v.data(), states_[l].f.data());
+  {
+    const TaskTimer timer(&tasks_, Task::InternalForces);
+    for (int l = 0; l < num_levels(); ++l)
+      forces_[l]->evaluate(states_[l].u.data(), states_[l].v.data(), states_[l].f.data());
+  }
   if (transfer_) transfer_forces();
 }
 
@@ -526,6 +533,7 @@ Vec3 HierarchicalSimulation::from_parent(int l, int q, bool velocity) const {
 }
 
 void HierarchicalSimulation::apply_changes() {
+  changed();
   lists_->update(*hierarchy_, hierarchy_->take_touched());
   // Coarse to fine, so a woken point's sources are initialised before it.
   std::sort(woken_.begin(), woken_.end());
@@ -549,6 +557,7 @@ void HierarchicalSimulation::apply_changes() {
 // Everything that follows from the statuses, once the lists are refiled and the points' values
 // are current: after a split or merge (apply_changes) and when a checkpoint is taken back.
 void HierarchicalSimulation::rebuild_after_topology(double external_time) {
+  changed();
   refile_fixed_ghosts();
   for (auto& f : forces_) f->refresh_tets();
   adjust_interface_weights();
@@ -648,6 +657,10 @@ void HierarchicalSimulation::update_stable_steps() {
 // growths that their spectral margin does not cover (a soft beam hanging under gravity reached
 // g ≈ 8 and diverged at its computed step when they did not).
 void HierarchicalSimulation::refresh_tangent_growths() {
+  // From the displacements and the live tets only: a topology change's refresh serves the next
+  // frame's start when no step comes between them.
+  if (growths_version_ == version_) return;
+  growths_version_ = version_;
   stiffness_growth_.resize(num_levels());
   damping_growth_.resize(num_levels());
   for (int l = 0; l < num_levels(); ++l) {
@@ -678,6 +691,9 @@ void HierarchicalSimulation::adjust_interface_weights() {
   patch_report_ = patch_->apply(levels);
 }
 
-void HierarchicalSimulation::fill_inactive() { interpolate_inactive(*hierarchy_, fields_); }
+void HierarchicalSimulation::fill_inactive() {
+  changed();
+  interpolate_inactive(*hierarchy_, fields_);
+}
 
 }  // namespace mrsim

@@ -65,7 +65,11 @@ class HierarchicalSimulation {
   int num_levels() const { return static_cast<int>(models_.size()); }
   const LevelModel& model(int l) const { return *models_[l]; }
   const PointState& state(int l) const { return states_[l]; }
-  PointState& state(int l) { return states_[l]; }
+  /// For changing the point state: the caches of it (the skin's positions) are dropped.
+  PointState& state(int l) {
+    changed();
+    return states_[l];
+  }
   const Hierarchy& hierarchy() const { return *hierarchy_; }
   /// One point locator per level (static), built when first asked for: for the level links
   /// and the skin binding when the result cache does not hold them (simulation/link_cache.hpp),
@@ -80,6 +84,13 @@ class HierarchicalSimulation {
 
   /// Per-tet stress evaluations of level l's kernels so far (LevelForceField::tet_updates).
   std::int64_t tet_updates(int l) const { return forces_[l]->tet_updates(); }
+  /// The tets of level l with an active vertex (sorted), as its force pass keeps them since the
+  /// last topology change; nullptr when that pass keeps none (Cauchy without ghosts).
+  const std::vector<int>* live_tets(int l) const {
+    return transfer_ || models_[l]->law.strain == StrainMeasure::GreenLagrange
+               ? &forces_[l]->tets()
+               : nullptr;
+  }
 
   /// `steps` steps of dt (not with time levels: their unit is the frame).
   void advance(int steps);
@@ -236,6 +247,11 @@ class HierarchicalSimulation {
   bool adapt_step_ = false;
   double courant_ = 1.0, global_frame_ = 0;  // global_frame_: dt × steps per frame
   std::int64_t frames_ = 0, steps_ = 0;
+  // Names the state of the fields: every step, topology change and edit takes a new one, so a
+  // value computed from the fields can be kept while it stays (SkinContact::near_tools()).
+  std::uint64_t version_ = 1;
+  std::uint64_t growths_version_ = 0;  // of stiffness_growth_ and damping_growth_
+  void changed() { ++version_; }
   double frame_dt_ = 0;
   std::vector<LevelFields> fields_;
   std::vector<Vec3*> level_forces_;  // f of every level, for the ghost force transfer

@@ -14,9 +14,15 @@ double level_elastic_energy(const HierarchicalSimulation& sim, int l) {
   const LevelModel& m = sim.model(l);
   const auto& active = sim.lists().active(l);
   if (active.empty()) return 0;
-  std::vector<unsigned char> mark(m.num_tets(), 0);
-  std::vector<int> tets;
-  live_tets(m, IndexSet::of(active), mark, tets);
+  // The force pass's own list when it keeps one (the same sorted tets), else found here.
+  std::vector<int> found;
+  const std::vector<int>* live = sim.live_tets(l);
+  if (!live) {
+    std::vector<unsigned char> mark(m.num_tets(), 0);
+    live_tets(m, IndexSet::of(active), mark, found);
+    live = &found;
+  }
+  const std::vector<int>& tets = *live;
   const Vec3* u = sim.state(l).u.data();
   double e = 0;
   for (std::size_t k = 0; k < tets.size(); ++k) {

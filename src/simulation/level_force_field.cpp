@@ -93,7 +93,6 @@ void merge_subsets(const FieldSubset& a, const FieldSubset& b, FieldSubset& out)
 }
 
 std::int64_t LevelForceField::evaluate(const Vec3* u, const Vec3* v, Vec3* f) {
-  const TaskTimer timer(clock_, Task::InternalForces);
   const IndexSet pts = points();
   IndexSet tets = points_ ? IndexSet::of(tets_) : IndexSet::all(model_.num_tets());
   IndexSet gathered = IndexSet::of(gathered_);

@@ -4,7 +4,6 @@
 // Coupled to a hierarchy (energy-consistent coupling, docs/hierarchy.md), it also gathers the
 // force on the level's ghosts, each tet weighted by its active share, for the transfer to the
 // ghosts' sources (hierarchy/ghost_force_transfer.hpp): O(active + ghosts + live tets).
-#include "core/task_clock.hpp"
 #include "hierarchy/status_lists.hpp"
 #include "physics/internal_force.hpp"
 #include "time/force_field.hpp"
@@ -42,8 +41,6 @@ class LevelForceField final : public ForceField {
   /// tet passes; Cauchy without ghosts gathers per edge and makes none): the kernel's work.
   std::int64_t tet_updates() const { return tet_updates_; }
   void set_tet_updates(std::int64_t n) { tet_updates_ = n; }  // a checkpoint's
-  /// Evaluations count their wall time as Task::InternalForces here (nullptr: not timed).
-  void set_clock(TaskClock* clock) { clock_ = clock; }
 
   /// Fills `out` for these integrated points (a subset of the served ones) and the ghosts of
   /// this level whose force reaches them (sorted). O(their incident tets).
@@ -84,7 +81,6 @@ class LevelForceField final : public ForceField {
   std::vector<int> gathered_;             // active ∪ ghosts, sorted
   std::vector<double> share_;             // per tet, 0 outside tets_
   const FieldSubset* subset_ = nullptr;
-  TaskClock* clock_ = nullptr;
   std::int64_t tet_updates_ = 0;
 };
 

@@ -10,6 +10,7 @@
 #include <numeric>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/interruption.hpp"
@@ -207,7 +208,8 @@ class FrameWriter {
     } else {  // one step for every particle: one column
       std::int64_t integrated = 0, evaluations = 0;
       for (int l = 0; l < L_; ++l) {
-        for (int p : sim_.lists().active(l)) integrated += sim_.state(l).free_point[p];
+        const PointState& s = std::as_const(sim_).state(l);  // read only: keeps its caches
+        for (int p : sim_.lists().active(l)) integrated += s.free_point[p];
         evaluations += sim_.force_evaluations(l);
       }
       rec.time_levels = {integrated};
@@ -273,7 +275,8 @@ class FrameWriter {
     std::fill(time_level_[l].begin(), time_level_[l].end(), -1);
     const TimeAdaptivity* ta = sim_.time_levels();
     for (int p : sim_.lists().active(l))
-      if (sim_.state(l).free_point[p]) time_level_[l][p] = ta ? ta->level_of(l, p) : 0;
+      if (std::as_const(sim_).state(l).free_point[p])
+        time_level_[l][p] = ta ? ta->level_of(l, p) : 0;
   }
 
   // Per tet of level l: the share of it level l simulates (hierarchy/level_ownership.hpp), in
@@ -287,7 +290,7 @@ class FrameWriter {
     const bool coverage_changed = ownership_->observe(sim_.hierarchy());
     std::vector<LevelFrameView> views(L_);
     for (int l = 0; l < L_; ++l) {
-      const PointState& s = sim_.state(l);
+      const PointState& s = std::as_const(sim_).state(l);
       fill_time_levels(l);
       std::fill(force_[l].begin(), force_[l].end(), Vec3::Zero());
       for (int p : sim_.lists().active(l)) force_[l][p] = s.f[p];  // only active points have one

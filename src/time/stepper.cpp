@@ -122,10 +122,13 @@ IndexSet Stepper::points(const IntegrationBlock& b) const {
 }
 
 void Stepper::evaluate_all() {
-  for (size_t k = 0; k < blocks_.size(); ++k) {
-    if (!blocks_[k].forces) continue;
-    PointState& s = *blocks_[k].state;
-    evaluations_[k] += blocks_[k].forces->evaluate(s.u.data(), s.v.data(), s.f.data());
+  {
+    const TaskTimer timer(clock_, Task::InternalForces);
+    for (size_t k = 0; k < blocks_.size(); ++k) {
+      if (!blocks_[k].forces) continue;
+      PointState& s = *blocks_[k].state;
+      evaluations_[k] += blocks_[k].forces->evaluate(s.u.data(), s.v.data(), s.f.data());
+    }
   }
   if (gathered_) gathered_();
 }

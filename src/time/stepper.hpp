@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/index_set.hpp"
+#include "core/task_clock.hpp"
 #include "time/force_field.hpp"
 #include "time/integrator_kind.hpp"
 #include "time/momentum_restoration.hpp"
@@ -60,6 +61,9 @@ class Stepper {
   void restore_momentum_over(std::vector<IntegrationBlock> body);
   /// The blocks, whose point lists and dt_scale may be changed between steps.
   IntegrationBlock& block(int k) { return blocks_[k]; }
+  /// Times every force evaluation (all blocks at once) into Task::InternalForces: one pair of
+  /// clock reads per evaluation, not one per level (nullptr: no timing).
+  void set_clock(TaskClock* clock) { clock_ = clock; }
 
  private:
   IndexSet points(const IntegrationBlock& b) const;
@@ -72,6 +76,7 @@ class Stepper {
 
   Integrator kind_;
   std::vector<IntegrationBlock> blocks_;
+  TaskClock* clock_ = nullptr;
   std::function<void()> sync_;
   std::function<void()> gathered_;
   std::vector<std::int64_t> evaluations_;

@@ -114,5 +114,50 @@ TEST(BroadPhase, ReachableSkinOfARunIsEveryVertexNearOneOfItsSamplesAndNoOther) 
   EXPECT_LT(expected.size(), skin.rest.size() / 2);  // and most of it is out of reach
 }
 
+// A call with the version of the last one takes its skin positions and speed again (the state
+// did not change), version 0 or another version interpolates them anew, and a remap (the skin
+// follows other points) forgets them.
+TEST(BroadPhase, SkinPositionsAreKeptForTheirVersionUntilTheSkinIsRemapped) {
+  const testing::ThreeLevels f;
+  Hierarchy h = f.make();
+  const Skin skin = boundary_skin(f.meshes.back());
+  std::vector<const TetMesh*> meshes;
+  for (const TetMesh& m : f.meshes) meshes.push_back(&m);
+  Tool tool;
+  tool.shape.kind = ToolShapeKind::Sphere;
+  tool.shape.radius = 0.006;
+  tool.trajectory = ToolTrajectory({{0.0, Vec3(0.05, 0.03, 0.05)}, {1.0, Vec3(0.05, 0.03, 0.05)}},
+                                   Interpolation::Linear, "tool");
+  SkinContact contact(skin, bind_skin(skin, meshes), {tool}, 1e5);
+  std::vector<std::vector<std::uint8_t>> free(f.meshes.size());
+  std::vector<const std::vector<std::uint8_t>*> free_point;
+  for (std::size_t l = 0; l < f.meshes.size(); ++l) {
+    free[l].assign(f.meshes[l].points.size(), 1);
+    free_point.push_back(&free[l]);
+  }
+  contact.remap(h, free_point);
+  std::vector<std::vector<Vec3>> u(f.meshes.size());
+  std::vector<LevelFields> fields;
+  for (std::size_t l = 0; l < f.meshes.size(); ++l) {
+    u[l].assign(f.meshes[l].points.size(), Vec3::Zero());
+    fields.push_back({u[l].data(), u[l].data()});
+  }
+  std::vector<std::vector<int>> at_rest, found;
+  contact.near_tools(0, 0.1, fields, at_rest, 7);
+  for (auto& level : u) std::fill(level.begin(), level.end(), Vec3(0, 0, 0.008));  // 8 mm up
+  contact.near_tools(0, 0.1, fields, found, 7);
+  EXPECT_EQ(found, at_rest);  // version 7's positions: at rest
+  std::vector<std::vector<int>> raised;
+  contact.near_tools(0, 0.1, fields, raised, 8);
+  EXPECT_NE(raised, at_rest);  // the raised skin is nearer the tool
+  contact.near_tools(0, 0.1, fields, found, 0);
+  EXPECT_EQ(found, raised);
+  contact.near_tools(0, 0.1, fields, found, 9);
+  for (auto& level : u) std::fill(level.begin(), level.end(), Vec3::Zero());
+  contact.remap(h, free_point);
+  contact.near_tools(0, 0.1, fields, found, 9);
+  EXPECT_EQ(found, at_rest);  // computed again after the remap
+}
+
 }  // namespace
 }  // namespace mrsim

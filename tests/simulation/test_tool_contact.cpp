@@ -238,5 +238,30 @@ TEST(ToolContact, SkinFollowsTheHierarchyAndContactForcesDoItsVirtualWork) {
   EXPECT_GT(std::abs(on_skin), 0);
 }
 
+// The skin's positions interpolated for the refinement's look-ahead (contact_region) serve the
+// next frame's broad phase only while the state is the same (SkinContact::near_tools' version):
+// a run that asked for the look-ahead finds the same candidates as one that did not, with and
+// without the points edited in between; an edit that was missed would keep the old skin.
+TEST(ToolContact, TheLookAheadsSkinPositionsServeTheBroadPhaseOnlyForTheSameState) {
+  SlidingProbe probe(Coupling::Energy);
+  const auto candidates = [&](bool look_ahead, bool edit) {
+    HierarchicalSimulation sim(probe.pointers(), probe.setup);
+    sim.advance(probe.steps_per_frame);  // the probe is above the skin
+    std::vector<std::pair<int, int>> region;
+    if (look_ahead) sim.contact_region(3 * probe.frame, region);
+    if (edit)  // the whole body 1.5 mm up, into the probe's reach
+      for (int l = 0; l < sim.num_levels(); ++l)
+        for (int p : sim.lists().active(l))
+          if (sim.state(l).free_point[p]) sim.state(l).u[p] += Vec3(0, 0, 1.5e-3);
+    sim.advance(1);  // its frame's broad phase, then one step
+    return sim.contact()->candidates();
+  };
+  const auto plain = candidates(false, false);
+  EXPECT_EQ(candidates(true, false), plain);
+  const auto edited = candidates(false, true);
+  EXPECT_NE(edited, plain);  // the edit matters to the broad phase
+  EXPECT_EQ(candidates(true, true), edited);
+}
+
 }  // namespace
 }  // namespace mrsim
