@@ -1,7 +1,5 @@
 #include "hierarchy/barycentric_rows.hpp"
 
-#include <cstring>
-
 #include "physics/green_nodal_forces.hpp"
 
 namespace mrsim {
@@ -17,7 +15,7 @@ inline Vec3 combine(const Vec3* s, const std::array<int, 4>& i, const std::array
 
 RowBuild row_build() {
 #if defined(MRSIM_AVX2_ROWS)
-  if (std::strcmp(green_kernel_name(), "baseline") != 0) return RowBuild::Avx2;
+  if (green_kernel_is_wide()) return RowBuild::Avx2;
 #endif
   return RowBuild::Baseline;
 }

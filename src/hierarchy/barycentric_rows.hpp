@@ -17,8 +17,8 @@ namespace mrsim {
 
 enum class RowBuild { Baseline, Avx2 };
 
-/// Avx2 when it was compiled in, the processor has it and the force kernel's chosen build is not
-/// "baseline" (physics/green_nodal_forces.hpp); Baseline otherwise.
+/// Avx2 when it was compiled in and the force kernel runs a wide build (green_kernel_is_wide(),
+/// physics/green_nodal_forces.hpp: the processor has AVX2); Baseline otherwise.
 RowBuild row_build();
 
 void interpolate_rows(RowBuild build, std::span<const int> points,

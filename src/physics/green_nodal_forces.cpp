@@ -99,6 +99,8 @@ KernelBuild kernel_build() {
 
 const char* green_kernel_name() { return kBuildNames[static_cast<int>(kernel_build())]; }
 
+bool green_kernel_is_wide() { return kernel_build() != KernelBuild::Baseline; }
+
 std::vector<std::string> green_kernel_builds() {
   std::vector<std::string> names;
   for (const KernelBuild b : kWidestFirst)

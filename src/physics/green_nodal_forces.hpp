@@ -42,6 +42,9 @@ void green_scatter_packed(const LevelModel& m, PackedTets& packed, const Vec3* u
 /// or "baseline", unless choose_green_kernel() chose another (every build gives the same bits).
 /// summary.json and `mrsim --version` say it, since it sets the speed.
 const char* green_kernel_name();
+/// Is that build wider than the baseline (AVX2 or AVX-512)? The ghosts' per-step passes take
+/// their AVX2 build with it (hierarchy/barycentric_rows.hpp).
+bool green_kernel_is_wide();
 
 /// The builds this processor runs, widest first; and the same as text, "avx512, avx2, baseline".
 std::vector<std::string> green_kernel_builds();

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/byte_record.hpp"
+#include "hierarchy/csr_lists.hpp"
 #include "simulation/result_cache.hpp"
 
 namespace mrsim {
@@ -30,12 +31,8 @@ std::filesystem::path file_of(const std::string& key) {
 
 void fail(const char* why) { throw std::runtime_error(why); }
 
-// start[0..n] from 0 to `items`, never decreasing.
 void check_rows(const std::vector<int>& start, std::size_t n, std::size_t items) {
-  if (start.size() != n + 1 || start.front() != 0 || start.back() != static_cast<int>(items))
-    fail("rows that do not add up");
-  for (std::size_t i = 0; i < n; ++i)
-    if (start[i + 1] < start[i]) fail("rows that do not add up");
+  if (!rows_add_up(start, n, items)) fail("rows that do not add up");
 }
 
 // Each point's neighbours ascending, other points of the mesh; each incidence a tet of the mesh

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/byte_record.hpp"
+#include "hierarchy/csr_lists.hpp"
 
 namespace mrsim {
 
@@ -67,11 +68,7 @@ CsrLists get_lists(ByteRecordReader& r, std::size_t rows, int items_below) {
   CsrLists c;
   c.start = r.array<int>(rows + 1);
   c.items = r.array<int>(kAnyCount);
-  if (c.start.size() != rows + 1 || c.start.front() != 0 ||
-      c.start.back() != static_cast<int>(c.items.size()))
-    fail("rows that do not add up");
-  for (std::size_t k = 0; k < rows; ++k)
-    if (c.start[k + 1] < c.start[k]) fail("rows that do not add up");
+  if (!rows_add_up(c.start, rows, c.items.size())) fail("rows that do not add up");
   for (int p : c.items)
     if (p < 0 || p >= items_below) fail("a point out of its level");
   return c;
