@@ -90,8 +90,12 @@ void SpaceAdaptivity::evaluate(const HierarchicalSimulation& sim) {
   for (int l = 0; l < sim.num_levels(); ++l) {
     std::fill(criterion_[l].begin(), criterion_[l].end(), 0.0);
     const LevelModel& m = sim.model(l);
-    for (int p : sim.lists().active(l))
-      criterion_[l][p] = m.mean_edge[p] * corrected_laplacian(m, p, sim.state(l).u.data()).norm();
+    const std::vector<int>& active = sim.lists().active(l);
+    const Vec3* u = sim.state(l).u.data();
+    if (const std::vector<int>* tets = sim.live_tets(l))  // each tet's gradient once
+      corrected_criterion(m, active, *tets, u, gradients_, criterion_[l].data());
+    else
+      for (int p : active) criterion_[l][p] = m.mean_edge[p] * corrected_laplacian(m, p, u).norm();
   }
   if (s_.predict_horizon > 0) add_predicted(sim);
 }

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/laplacian_criterion.hpp"
 #include "simulation/hierarchical_simulation.hpp"
 
 namespace mrsim {
@@ -95,6 +96,7 @@ class SpaceAdaptivity {
 
   SpaceAdaptivitySettings s_;
   std::vector<std::vector<double>> criterion_;
+  TetGradientCache gradients_;  // evaluate()'s scratch, one level at a time
   // predict_horizon > 0: the predicted displacement of every point (ghosts interpolated from
   // their sources' predictions) and scratch for the velocities update_ghosts also fills.
   std::vector<std::vector<Vec3>> predicted_, scratch_;

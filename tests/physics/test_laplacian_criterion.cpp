@@ -5,9 +5,12 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
+#include "core/index_set.hpp"
+#include "physics/internal_force.hpp"
 #include "physics/laplacian_criterion.hpp"
 #include "physics/level_model.hpp"
 
@@ -75,6 +78,43 @@ TEST(CorrectedLaplacian, SameBitsAsTheTwoPassSumAroundAPointOfManyTets) {
     ASSERT_GT(want.norm(), 0.0);
     for (int c = 0; c < 3; ++c) EXPECT_EQ(got[c], want[c]) << n << " around, component " << c;
   }
+}
+
+// The criterion of a level's active points with each live tet's gradient computed once (what
+// SpaceAdaptivity::evaluate() runs): the bits of corrected_laplacian() point by point, around
+// the fan's centre (80 tets, more than it keeps) and at rim points; a tet left out of the list
+// is an error, not a read of another tet's gradient.
+TEST(CorrectedLaplacian, TheCriterionWithSharedGradientsHasThePointwiseBits) {
+  MaterialLaw law;
+  law.lambda = 5.0e5;
+  law.mu = 2.0e5;
+  law.density = 1000;
+  const TetMesh mesh = double_fan(40);
+  const LevelModel m = build_level_model(mesh, law);
+  std::vector<Vec3> u(mesh.points.size());
+  for (std::size_t p = 0; p < u.size(); ++p) {
+    const Vec3& x = mesh.points[p];
+    u[p] = Vec3(0.01 * x.x() * x.y() + 0.003 * x.z() * x.z(), 0.02 * x.y() * x.y(),
+                -0.01 * x.x() * x.z());
+  }
+  const std::vector<int> points = {0, 4, 9, 17, 30};
+  std::vector<unsigned char> mark(m.num_tets(), 0);
+  std::vector<int> tets;
+  live_tets(m, IndexSet::of(points), mark, tets);
+  TetGradientCache cache;
+  std::vector<double> got(mesh.points.size(), -1.0);
+  corrected_criterion(m, points, tets, u.data(), cache, got.data());
+  for (int p : points) {
+    const double want = m.mean_edge[p] * corrected_laplacian(m, p, u.data()).norm();
+    ASSERT_GT(want, 0.0);
+    EXPECT_EQ(got[p], want) << "point " << p;
+  }
+  EXPECT_EQ(got[5], -1.0);  // not asked for
+  for (int slot : cache.slot) EXPECT_EQ(slot, -1);  // left clean for the next level
+  tets.erase(tets.begin() + 3);
+  EXPECT_THROW(corrected_criterion(m, points, tets, u.data(), cache, got.data()),
+               std::logic_error);
+  for (int slot : cache.slot) EXPECT_EQ(slot, -1);  // and after the error
 }
 
 }  // namespace
