@@ -135,7 +135,7 @@ void pass_bounds_on(const Hierarchy& h, const std::vector<int>& ghosts, int l,
 
 void interface_inertia(const Hierarchy& h, const StatusLists& lists,
                        const std::vector<InertiaLevel>& levels, bool transfer,
-                       std::vector<std::vector<PointInertia>>& out) {
+                       std::vector<std::vector<PointInertia>>& out, MergedRows& rows) {
   const int L = h.num_levels();
   out.resize(L);
   for (int l = 0; l < L; ++l) {
@@ -169,7 +169,7 @@ void interface_inertia(const Hierarchy& h, const StatusLists& lists,
   for (int l = 0; l + 1 < L; ++l)
     pass_mass_on(lists.ghost_sub(l), h.links(l).child_tet, *h.level(l + 1).mesh, h, l,
                  levels[l], own_mass[l], stay[l], out[l], out[l + 1]);
-  MergedRows rows;
+  rows.clear();  // the statuses changed since its last use
   const OwnBound* next = own.data();
   for (int l = 0; l < L; ++l)
     for (const auto* ghosts : {&lists.ghost_iface(l), &lists.ghost_sub(l)}) {

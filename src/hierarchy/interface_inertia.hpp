@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "hierarchy/merged_rows.hpp"
 #include "hierarchy/status_lists.hpp"
 #include "physics/level_model.hpp"
 
@@ -40,9 +41,11 @@ struct InertiaLevel {
 /// no ghosts (bit for bit the lumped mass), the weighted and transferred values otherwise.
 /// Ghost entries are left as scratch. `transfer`: the energy couplings (ghosts pass their share
 /// on); without it (the thesis' force coupling) every active point keeps its own star.
-/// O(active + live tets + the ghosts' merged rows).
+/// O(active + live tets + the ghosts' merged rows). `rows`: scratch for those rows, cleared here;
+/// kept by the caller from one topology change to the next, its memory is allocated once (a
+/// fresh one regrew hundreds of kilobytes of terms at every change, fragmenting the heap).
 void interface_inertia(const Hierarchy& h, const StatusLists& lists,
                        const std::vector<InertiaLevel>& levels, bool transfer,
-                       std::vector<std::vector<PointInertia>>& out);
+                       std::vector<std::vector<PointInertia>>& out, MergedRows& rows);
 
 }  // namespace mrsim

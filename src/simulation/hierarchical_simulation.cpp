@@ -584,7 +584,7 @@ void HierarchicalSimulation::update_inertia() {
       levels[l].weight = &forces_[l]->tet_weights();
     }
   }
-  interface_inertia(*hierarchy_, *lists_, levels, transfer_, inertia_);
+  interface_inertia(*hierarchy_, *lists_, levels, transfer_, inertia_, inertia_rows_);
   for (int l = 0; l < L; ++l) {
     forces_[l]->weigh(lists_->active(l), inertia_[l]);
     for (int p : lists_->active(l))

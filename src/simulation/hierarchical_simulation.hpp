@@ -287,6 +287,7 @@ class HierarchicalSimulation {
   double step_share_ = 1.0;  // of the kick-drift stable step (Newton-Cotes: half)
   TaskClock tasks_;
   std::vector<std::vector<PointInertia>> inertia_;  // [level][point], active points
+  MergedRows inertia_rows_;  // interface_inertia()'s scratch, kept between topology changes
   std::vector<std::vector<PointInertia>> loaded_;   // the same with the tools' contact
   std::vector<int> near_;                           // skin vertices near a tool (scratch)
   std::vector<std::vector<double>> stable_dt_;      // [level][point], active free points
