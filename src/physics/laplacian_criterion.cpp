@@ -7,32 +7,51 @@
 
 namespace mrsim {
 
-Vec3 corrected_laplacian(const LevelModel& m, int i, const Vec3* u) {
-  // Each incident tet's gradient serves twice (the mean, then the deviations from it): kept for
-  // the first kKept tets rather than computed again (half this function's work), recomputed
-  // beyond them. The same values either way.
-  constexpr int kKept = 48;
-  Mat3 kept[kKept];
+namespace {
+
+// The two passes of method.md §3.1 at point i: the volume-weighted mean gradient Ḡ over the
+// incident tets, then L = -Σ V_t (G_t - Ḡ) ∇N_i^t. `mean_pass(s, t)` and `deviation_pass(s, t)`
+// give incidence s's tet gradient in each pass, so the callers differ only in where it comes
+// from (computed, kept, cached): the same arithmetic, the same bits.
+template <class MeanPass, class DeviationPass>
+Vec3 two_passes(const LevelModel& m, int i, MeanPass mean_pass, DeviationPass deviation_pass) {
   Mat3 Gbar = Mat3::Zero();
   double vsum = 0;
   const int first = m.adj.inc_start[i], last = m.adj.inc_start[i + 1];
   for (int s = first; s < last; ++s) {
-    if (s + kTetPrefetchAhead < last) prefetch_tet(m.geo, m.adj.inc_tet[s + kTetPrefetchAhead]);
     const int t = m.adj.inc_tet[s];
-    const Mat3 G = tet_gradient(m.geo.grad[t], m.geo.tets[t], u);
-    if (s - first < kKept) kept[s - first] = G;
-    Gbar += m.geo.volume[t] * G;
+    Gbar += m.geo.volume[t] * mean_pass(s, t);
     vsum += m.geo.volume[t];
   }
   Gbar /= vsum;
   Vec3 L = Vec3::Zero();
   for (int s = first; s < last; ++s) {
     const int t = m.adj.inc_tet[s];
-    const Mat3 G =
-        s - first < kKept ? kept[s - first] : tet_gradient(m.geo.grad[t], m.geo.tets[t], u);
-    L -= m.geo.volume[t] * ((G - Gbar) * m.geo.grad[t][m.adj.inc_local[s]]);
+    L -= m.geo.volume[t] * ((deviation_pass(s, t) - Gbar) * m.geo.grad[t][m.adj.inc_local[s]]);
   }
   return L / m.lumped_volume[i];
+}
+
+}  // namespace
+
+Vec3 corrected_laplacian(const LevelModel& m, int i, const Vec3* u) {
+  // Each incident tet's gradient serves twice (the mean, then the deviations from it): kept for
+  // the first kKept tets rather than computed again (half this function's work), recomputed
+  // beyond them. The same values either way.
+  constexpr int kKept = 48;
+  Mat3 kept[kKept];
+  const int first = m.adj.inc_start[i], last = m.adj.inc_start[i + 1];
+  const auto gradient = [&](int t) { return tet_gradient(m.geo.grad[t], m.geo.tets[t], u); };
+  return two_passes(
+      m, i,
+      [&](int s, int t) {
+        if (s + kTetPrefetchAhead < last)
+          prefetch_tet(m.geo, m.adj.inc_tet[s + kTetPrefetchAhead]);
+        const Mat3 G = gradient(t);
+        if (s - first < kKept) kept[s - first] = G;
+        return G;
+      },
+      [&](int s, int t) { return s - first < kKept ? kept[s - first] : gradient(t); });
 }
 
 void corrected_criterion(const LevelModel& m, std::span<const int> points,
@@ -46,29 +65,16 @@ void corrected_criterion(const LevelModel& m, std::span<const int> points,
     cache.slot[t] = static_cast<int>(k);
     cache.G[k] = tet_gradient(m.geo.grad[t], m.geo.tets[t], u);
   }
-  // corrected_laplacian()'s two passes, the gradients read from the cache.
   for (const int i : points) {
-    const int first = m.adj.inc_start[i], last = m.adj.inc_start[i + 1];
-    Mat3 Gbar = Mat3::Zero();
-    double vsum = 0;
-    for (int s = first; s < last; ++s) {
-      const int t = m.adj.inc_tet[s];
+    const auto cached = [&](int, int t) -> const Mat3& {
       if (cache.slot[t] < 0) {
         for (const int k : tets) cache.slot[k] = -1;
         throw std::logic_error("corrected_criterion: a tet of point " + std::to_string(i) +
                                " is not among the tets given");
       }
-      Gbar += m.geo.volume[t] * cache.G[cache.slot[t]];
-      vsum += m.geo.volume[t];
-    }
-    Gbar /= vsum;
-    Vec3 L = Vec3::Zero();
-    for (int s = first; s < last; ++s) {
-      const int t = m.adj.inc_tet[s];
-      const Mat3& G = cache.G[cache.slot[t]];
-      L -= m.geo.volume[t] * ((G - Gbar) * m.geo.grad[t][m.adj.inc_local[s]]);
-    }
-    criterion[i] = m.mean_edge[i] * (L / m.lumped_volume[i]).norm();
+      return cache.G[cache.slot[t]];
+    };
+    criterion[i] = m.mean_edge[i] * two_passes(m, i, cached, cached).norm();
   }
   for (const int t : tets) cache.slot[t] = -1;
 }

@@ -87,7 +87,6 @@ void HierarchicalSimulation::restore(const SimulationCheckpoint& c) {
     const LevelCheckpoint& level = c.levels[l];
     counters[l] = {level.subdivided, level.support, level.active_ref, level.ghost_ref};
   }
-  changed();
   hierarchy_->restore(std::move(counters));
   for (int l = 0; l < L; ++l) {
     const LevelCheckpoint& level = c.levels[l];

@@ -372,8 +372,7 @@ void HierarchicalSimulation::skin_state(std::vector<Vec3>& u, std::vector<Vec3>&
 }
 
 // Positions (and with them the load time) moved to the end of the step under way.
-void HierarchicalSimulation::after_positions() {
-  changed();
+void HierarchicalSimulation::after_positions() {  // refresh_ghosts() names the new state
   refresh_ghosts();
   if (!external_.empty()) update_external(clock_);
 }
@@ -533,7 +532,6 @@ Vec3 HierarchicalSimulation::from_parent(int l, int q, bool velocity) const {
 }
 
 void HierarchicalSimulation::apply_changes() {
-  changed();
   lists_->update(*hierarchy_, hierarchy_->take_touched());
   // Coarse to fine, so a woken point's sources are initialised before it.
   std::sort(woken_.begin(), woken_.end());

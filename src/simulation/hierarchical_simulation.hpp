@@ -86,11 +86,7 @@ class HierarchicalSimulation {
   std::int64_t tet_updates(int l) const { return forces_[l]->tet_updates(); }
   /// The tets of level l with an active vertex (sorted), as its force pass keeps them since the
   /// last topology change; nullptr when that pass keeps none (Cauchy without ghosts).
-  const std::vector<int>* live_tets(int l) const {
-    return transfer_ || models_[l]->law.strain == StrainMeasure::GreenLagrange
-               ? &forces_[l]->tets()
-               : nullptr;
-  }
+  const std::vector<int>* live_tets(int l) const { return forces_[l]->kept_live_tets(); }
 
   /// `steps` steps of dt (not with time levels: their unit is the frame).
   void advance(int steps);

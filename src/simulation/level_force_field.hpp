@@ -54,6 +54,12 @@ class LevelForceField final : public ForceField {
   /// adjust them before the next evaluation).
   bool weighted() const { return weighted_; }
   const std::vector<int>& tets() const { return tets_; }
+  /// tets() when they are the tets with a served vertex, kept since refresh_tets() (sorted):
+  /// coupled, or Green–Lagrange; nullptr when this field keeps no such list (Cauchy alone).
+  const std::vector<int>* kept_live_tets() const {
+    return hierarchy_ || (points_ && model_.law.strain == StrainMeasure::GreenLagrange) ? &tets_
+                                                                                       : nullptr;
+  }
   const std::vector<double>& tet_weights() const { return share_; }
   /// For hierarchy/patch_test_weights.hpp: the weights to adjust, before the next evaluation
   /// (the packed pass gathers them again then).

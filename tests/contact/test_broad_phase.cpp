@@ -22,12 +22,40 @@ double distance_to_segment(const Vec3& x, const Vec3& a, const Vec3& b) {
   return (x - (a + s * d)).norm();
 }
 
-TEST(BroadPhase, FindsEveryVertexWithinReachOfTheSampledPathAndNoOther) {
-  const testing::ThreeLevels f;
+// The three-level box's boundary skin, bound to its levels with every point free, and zero
+// displacement and velocity fields (u, shared as v) that a test may change.
+struct BoxSkin {
+  testing::ThreeLevels f;
   Hierarchy h = f.make();
-  const Skin skin = boundary_skin(f.meshes.back());
-  std::vector<const TetMesh*> meshes;
-  for (const TetMesh& m : f.meshes) meshes.push_back(&m);
+  Skin skin = boundary_skin(f.meshes.back());
+  std::vector<std::vector<std::uint8_t>> free;
+  std::vector<const std::vector<std::uint8_t>*> free_point;
+  std::vector<std::vector<Vec3>> u;
+  std::vector<LevelFields> fields;
+
+  BoxSkin() {
+    free.resize(f.meshes.size());
+    u.resize(f.meshes.size());
+    for (std::size_t l = 0; l < f.meshes.size(); ++l) {
+      free[l].assign(f.meshes[l].points.size(), 1);
+      free_point.push_back(&free[l]);
+      u[l].assign(f.meshes[l].points.size(), Vec3::Zero());
+      fields.push_back({u[l].data(), u[l].data()});
+    }
+  }
+  SkinContact contact(const Tool& tool) const {
+    std::vector<const TetMesh*> meshes;
+    for (const TetMesh& m : f.meshes) meshes.push_back(&m);
+    SkinContact c(skin, bind_skin(skin, meshes), {tool}, 1e5);
+    c.remap(h, free_point);
+    return c;
+  }
+};
+
+TEST(BroadPhase, FindsEveryVertexWithinReachOfTheSampledPathAndNoOther) {
+  const BoxSkin box;
+  const Skin& skin = box.skin;
+  const std::vector<LevelFields>& fields = box.fields;
   Tool tool;
   tool.shape.kind = ToolShapeKind::Sphere;
   tool.shape.radius = 0.006;
@@ -36,20 +64,7 @@ TEST(BroadPhase, FindsEveryVertexWithinReachOfTheSampledPathAndNoOther) {
                                     {0.5, Vec3(0.05, 0.05, 0.043)},
                                     {1.0, Vec3(0.12, 0.02, 0.06)}},
                                    Interpolation::Smooth, "tool");
-  SkinContact contact(skin, bind_skin(skin, meshes), {tool}, 1e5);
-  std::vector<std::vector<std::uint8_t>> free(f.meshes.size());
-  std::vector<const std::vector<std::uint8_t>*> free_point;
-  for (std::size_t l = 0; l < f.meshes.size(); ++l) {
-    free[l].assign(f.meshes[l].points.size(), 1);
-    free_point.push_back(&free[l]);
-  }
-  contact.remap(h, free_point);
-  std::vector<std::vector<Vec3>> zero(f.meshes.size());
-  std::vector<LevelFields> fields;
-  for (std::size_t l = 0; l < f.meshes.size(); ++l) {
-    zero[l].assign(f.meshes[l].points.size(), Vec3::Zero());
-    fields.push_back({zero[l].data(), zero[l].data()});
-  }
+  SkinContact contact = box.contact(tool);
   int near_total = 0;
   for (int frame = 0; frame < 10; ++frame) {
     const double t0 = 0.1 * frame, t1 = t0 + 0.1;
@@ -118,30 +133,15 @@ TEST(BroadPhase, ReachableSkinOfARunIsEveryVertexNearOneOfItsSamplesAndNoOther) 
 // did not change), version 0 or another version interpolates them anew, and a remap (the skin
 // follows other points) forgets them.
 TEST(BroadPhase, SkinPositionsAreKeptForTheirVersionUntilTheSkinIsRemapped) {
-  const testing::ThreeLevels f;
-  Hierarchy h = f.make();
-  const Skin skin = boundary_skin(f.meshes.back());
-  std::vector<const TetMesh*> meshes;
-  for (const TetMesh& m : f.meshes) meshes.push_back(&m);
+  BoxSkin box;
+  std::vector<std::vector<Vec3>>& u = box.u;
+  const std::vector<LevelFields>& fields = box.fields;
   Tool tool;
   tool.shape.kind = ToolShapeKind::Sphere;
   tool.shape.radius = 0.006;
   tool.trajectory = ToolTrajectory({{0.0, Vec3(0.05, 0.03, 0.05)}, {1.0, Vec3(0.05, 0.03, 0.05)}},
                                    Interpolation::Linear, "tool");
-  SkinContact contact(skin, bind_skin(skin, meshes), {tool}, 1e5);
-  std::vector<std::vector<std::uint8_t>> free(f.meshes.size());
-  std::vector<const std::vector<std::uint8_t>*> free_point;
-  for (std::size_t l = 0; l < f.meshes.size(); ++l) {
-    free[l].assign(f.meshes[l].points.size(), 1);
-    free_point.push_back(&free[l]);
-  }
-  contact.remap(h, free_point);
-  std::vector<std::vector<Vec3>> u(f.meshes.size());
-  std::vector<LevelFields> fields;
-  for (std::size_t l = 0; l < f.meshes.size(); ++l) {
-    u[l].assign(f.meshes[l].points.size(), Vec3::Zero());
-    fields.push_back({u[l].data(), u[l].data()});
-  }
+  SkinContact contact = box.contact(tool);
   std::vector<std::vector<int>> at_rest, found;
   contact.near_tools(0, 0.1, fields, at_rest, 7);
   for (auto& level : u) std::fill(level.begin(), level.end(), Vec3(0, 0, 0.008));  // 8 mm up
@@ -154,7 +154,7 @@ TEST(BroadPhase, SkinPositionsAreKeptForTheirVersionUntilTheSkinIsRemapped) {
   EXPECT_EQ(found, raised);
   contact.near_tools(0, 0.1, fields, found, 9);
   for (auto& level : u) std::fill(level.begin(), level.end(), Vec3::Zero());
-  contact.remap(h, free_point);
+  contact.remap(box.h, box.free_point);
   contact.near_tools(0, 0.1, fields, found, 9);
   EXPECT_EQ(found, at_rest);  // computed again after the remap
 }
