@@ -8,11 +8,18 @@ with their references in tests/golden/<name>/ using `mrsim compare` (tests/golde
 `check` (what ctest runs, label `golden`) exits with `mrsim compare`'s code: 0 equal, 1 differ
 (the report says what and where), 2 unreadable. `update` regenerates references on purpose:
 it prints what changed against the old reference first, then replaces log.h5 (repacked:
-contiguous, gzip, so the files stay small), scenario.yaml and summary.json.
+contiguous, gzip, so the files stay small), scenario.yaml and summary.json, and records the
+host that wrote them in tests/golden/HOST (processor vendor, family and model; C library).
+
+The references are checked bit for bit on a host like the one that wrote them. On another
+processor generation `check` compares at a relative tolerance of 1e-9 and says so: a host of
+another generation once moved some values by up to 1e-10 relative, for a reason not found
+(tests/golden/README.md). MRSIM_GOLDEN_EXACT=1 asks for the bits anywhere.
 """
 import argparse
 import os
 import pathlib
+import platform
 import shlex
 import shutil
 import subprocess
@@ -21,6 +28,38 @@ import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 GOLDEN = ROOT / "tests" / "golden"
+HOST_FILE = GOLDEN / "HOST"
+OTHER_HOST_RTOL = "1e-9"
+
+
+def host():
+    """What the references' bits depend on beyond the build: the processor's vendor, family
+    and model, and the C library (its libm)."""
+    cpu = {}
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                key, _, value = line.partition(":")
+                key = key.strip()
+                if key in ("vendor_id", "cpu family", "model") and key not in cpu:
+                    cpu[key] = value.strip()
+    except OSError:
+        pass
+    libc = " ".join(platform.libc_ver()) or "unknown C library"
+    return (f"{platform.machine()} {cpu.get('vendor_id', '?')} family {cpu.get('cpu family', '?')}"
+            f" model {cpu.get('model', '?')}; {libc}")
+
+
+def tolerance():
+    """The `mrsim compare` options for this host: none (bits) on the host kind that wrote the
+    references, else a relative tolerance, said on stderr."""
+    written_on = HOST_FILE.read_text().strip() if HOST_FILE.exists() else None
+    here = host()
+    if written_on in (None, here) or os.environ.get("MRSIM_GOLDEN_EXACT") == "1":
+        return []
+    print(f"golden: references written on '{written_on}', this host is '{here}': compared at "
+          f"rtol {OTHER_HOST_RTOL}, not bit for bit (tests/golden/README.md)", file=sys.stderr)
+    return ["--rtol", OTHER_HOST_RTOL]
 
 
 def read_cases():
@@ -48,8 +87,8 @@ def run_case(binary, name, case, out):
     return result.returncode
 
 
-def compare(binary, run, reference):
-    return subprocess.run([str(binary), "compare", str(run), str(reference)]).returncode
+def compare(binary, run, reference, options=()):
+    return subprocess.run([str(binary), "compare", str(run), str(reference), *options]).returncode
 
 
 def repack(source, target):
@@ -79,6 +118,7 @@ def repack(source, target):
 
 def check(args):
     cases = read_cases()
+    options = tolerance()
     worst = 0
     for name in args.names:
         if name not in cases:
@@ -86,7 +126,7 @@ def check(args):
         out = pathlib.Path(args.work) / name
         code = run_case(args.binary, name, cases[name], out)
         if code == 0:
-            code = compare(args.binary, out, GOLDEN / name)
+            code = compare(args.binary, out, GOLDEN / name, options)
         worst = max(worst, code)
     return worst
 
@@ -94,6 +134,13 @@ def check(args):
 def update(args):
     cases = read_cases()
     names = args.names or list(cases)
+    here = host()
+    written_on = HOST_FILE.read_text().strip() if HOST_FILE.exists() else None
+    if written_on not in (None, here) and set(names) != set(cases):
+        print(f"golden: the other references were written on '{written_on}', this host is "
+              f"'{here}': update every case so that they all come from one host", file=sys.stderr)
+        return 1
+    HOST_FILE.write_text(here + "\n")
     for name in names:
         if name not in cases:
             raise SystemExit(f"no golden case '{name}' in tests/golden/cases.txt")

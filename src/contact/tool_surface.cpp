@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/portable_math.hpp"
+
 namespace mrsim {
 
 namespace {
@@ -23,8 +25,9 @@ void add_arc(Profile& profile, double r, double zc, double a0, double a1, int st
   for (int i = 0; i <= steps; ++i) {
     const double a = a0 + (a1 - a0) * i / steps;
     // Exact zeros on the axis so poles are recognised (cos(pi/2) is not 0 in floating point).
-    const double rho = std::abs(std::abs(a) - std::numbers::pi / 2) < 1e-15 ? 0.0 : r * std::cos(a);
-    profile.push_back({rho, zc + r * std::sin(a)});
+    const double rho =
+        std::abs(std::abs(a) - std::numbers::pi / 2) < 1e-15 ? 0.0 : r * portable::cos(a);
+    profile.push_back({rho, zc + r * portable::sin(a)});
   }
 }
 
@@ -63,7 +66,7 @@ int add_ring(TriangleSurface& surface, const ProfilePoint& p, int segments) {
   }
   for (int i = 0; i < segments; ++i) {
     const double phi = 2 * std::numbers::pi * i / segments;
-    surface.points.emplace_back(p.rho * std::cos(phi), p.rho * std::sin(phi), p.z);
+    surface.points.emplace_back(p.rho * portable::cos(phi), p.rho * portable::sin(phi), p.z);
   }
   return first;
 }

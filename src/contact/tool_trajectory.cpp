@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "core/portable_math.hpp"
 #include "core/error.hpp"
 
 namespace mrsim {
@@ -47,15 +48,15 @@ void check_after(const Keyframe& prev, const Keyframe& key, std::size_t k,
 Vec3 rotation_vector(const Quat& q) {
   const double s = q.vec().norm();
   if (s < 1e-300) return Vec3::Zero();
-  return q.vec() * (2.0 * std::atan2(s, q.w()) / s);
+  return q.vec() * (2.0 * portable::atan2(s, q.w()) / s);
 }
 
 Quat from_rotation_vector(const Vec3& v) {
   const double angle = v.norm();
   // sin(angle/2)/angle -> 1/2 as the angle vanishes; the series keeps full precision there.
-  const double k = angle < 1e-8 ? 0.5 - angle * angle / 48.0 : std::sin(0.5 * angle) / angle;
+  const double k = angle < 1e-8 ? 0.5 - angle * angle / 48.0 : portable::sin(0.5 * angle) / angle;
   const Vec3 xyz = k * v;
-  return Quat(std::cos(0.5 * angle), xyz.x(), xyz.y(), xyz.z());
+  return Quat(portable::cos(0.5 * angle), xyz.x(), xyz.y(), xyz.z());
 }
 
 ToolPose at_key(const Keyframe& key) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "core/portable_math.hpp"
 #include "core/error.hpp"
 #include "hierarchy/calibration_loads.hpp"
 #include "physics/component_stiffness.hpp"
@@ -69,7 +70,7 @@ struct Probes {
 
 Params factors(const Vector& x) {
   Params s;
-  for (int j = 0; j < 7; ++j) s[j] = std::exp(x[j]);
+  for (int j = 0; j < 7; ++j) s[j] = portable::exp(x[j]);
   return s;
 }
 
@@ -79,7 +80,7 @@ Eigen::Index tet_index(std::size_t t, int j) { return 7 + 7 * static_cast<Eigen:
 TetTensors tet_factors(const Vector& x) {
   TetTensors p((x.size() - 7) / 7);
   for (size_t t = 0; t < p.size(); ++t)
-    for (int j = 0; j < 7; ++j) p[t][j] = std::exp(x[tet_index(t, j)]);
+    for (int j = 0; j < 7; ++j) p[t][j] = portable::exp(x[tet_index(t, j)]);
   return p;
 }
 
@@ -127,12 +128,12 @@ void static_rows(const ComponentStiffness& cs, const SparseLdlt& solver, const P
     if (!mean.empty()) {
       const double sag = mean[d].dot(u);
       r.sag.push_back(sag);
-      r.value[d] = std::log(sag);
+      r.value[d] = portable::log(sag);
       tet_derivatives(cs, s, p, solver.solve(mean[d]), u, -1 / sag, r.jacobian.row(d));
     } else {
       const double c = f.dot(u);
       r.sag.push_back(c / f.sum());
-      r.value[d] = std::log(c / f.sum());
+      r.value[d] = portable::log(c / f.sum());
       if (per_tet)
         tet_derivatives(cs, s, p, u, u, -1 / c, r.jacobian.row(d));
       else
@@ -153,7 +154,7 @@ void static_rows(const ComponentStiffness& cs, const SparseLdlt& solver, const P
       Vector e = Vector::Zero(n);
       e.segment<3>(at) = u.segment<3>(at) / peak;
       const Vector a = solver.solve(e);
-      r.value[3 + d] = kPeakWeight * std::log(peak);
+      r.value[3 + d] = kPeakWeight * portable::log(peak);
       tet_derivatives(cs, s, p, a, u, -kPeakWeight / peak, r.jacobian.row(3 + d));
     }
   }
@@ -168,7 +169,7 @@ void mode_rows(const ComponentStiffness& cs, const Modes& modes, int rigid, int 
     const Vector phi = modes.shapes.col(m);
     r.omega.push_back(std::sqrt(w2));
     const double weight = kModeWeight[k];
-    r.value[first + k] = weight * 0.5 * std::log(w2);
+    r.value[first + k] = weight * 0.5 * portable::log(w2);
     if (!p.empty())
       tet_derivatives(cs, s, p, phi, phi, weight / (2 * w2), r.jacobian.row(first + k));
     else
@@ -186,7 +187,7 @@ void local_rows(const ComponentStiffness& cs, const SparseLdlt& solver, const Pa
     const double c = loads[k].dot(u);
     r.local.push_back(c);
     const int row = first + static_cast<int>(k);
-    r.value[row] = kLocalWeight * std::log(c);
+    r.value[row] = kLocalWeight * portable::log(c);
     tet_derivatives(cs, s, p, u, u, -kLocalWeight / c, r.jacobian.row(row));
   }
 }
@@ -265,7 +266,7 @@ Vector tet_step(const Eigen::MatrixXd& J, const Vector& residual, const Vector& 
 Vector bounded(Vector x) {
   x = x.cwiseMax(-kLogBound).cwiseMin(kLogBound);
   if (x.size() == 7) return x;
-  const double top = std::log(kMaxStiffening);
+  const double top = portable::log(kMaxStiffening);
   x.head(7) = x.head(7).cwiseMin(top);
   for (std::size_t t = 0; t < static_cast<std::size_t>(x.size() - 7) / 7; ++t)
     for (int j = 0; j < 7; ++j) x[tet_index(t, j)] = std::min(x[tet_index(t, j)], top - x[j]);

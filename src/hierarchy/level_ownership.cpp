@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/portable_math.hpp"
 #include "hierarchy/tet_locator.hpp"
 #include "mesh/tet_neighbours.hpp"
 
@@ -30,7 +31,7 @@ double uniform(std::uint64_t key) {
 std::array<double, 4> uniform_bary(std::uint64_t key) {
   std::array<double, 4> w{};
   double sum = 0;
-  for (int a = 0; a < 4; ++a) sum += w[a] = -std::log(uniform(4 * key + a));
+  for (int a = 0; a < 4; ++a) sum += w[a] = -portable::log(uniform(4 * key + a));
   for (double& x : w) x /= sum;
   return w;
 }

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/portable_math.hpp"
+
 namespace mrsim {
 
 namespace {
@@ -41,7 +43,7 @@ Modes lowest_modes(const SparseLdlt& solver, double sigma, const Eigen::VectorXd
     Eigen::MatrixXd Q(n, steps);
     Eigen::VectorXd alpha(steps), beta(steps);
     Eigen::VectorXd q(n);
-    for (int i = 0; i < n; ++i) q[i] = 1.0 + 0.5 * std::sin(1.7 * i + 0.3);
+    for (int i = 0; i < n; ++i) q[i] = 1.0 + 0.5 * portable::sin(1.7 * i + 0.3);
     q /= std::sqrt(q.dot(mass.cwiseProduct(q)));
     int m = 0;
     for (; m < steps; ++m) {

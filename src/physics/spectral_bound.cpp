@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/portable_math.hpp"
 #include "physics/stable_step_bound.hpp"
 
 namespace mrsim {
@@ -78,7 +79,7 @@ std::pair<double, double> top_ritz(const std::vector<double>& alpha,
 // A fixed start vector with every component non-zero and no symmetry of the mesh, normalised.
 Eigen::VectorXd start_vector(int dofs) {
   Eigen::VectorXd q(dofs);
-  for (int k = 0; k < dofs; ++k) q[k] = 1.0 + 0.5 * std::sin(0.7 * k + 0.3 * (k % 7));
+  for (int k = 0; k < dofs; ++k) q[k] = 1.0 + 0.5 * portable::sin(0.7 * k + 0.3 * (k % 7));
   return q / q.norm();
 }
 

@@ -1,8 +1,9 @@
 #include "physics/stable_step_bound.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
+
+#include "core/symmetric_eigenvalues.hpp"
 
 namespace mrsim {
 
@@ -16,9 +17,7 @@ struct GradientNorms {
 GradientNorms gradient_norms(const TetGradients& g) {
   Mat3 GGt = Mat3::Zero();
   for (const Vec3& ga : g) GGt.noalias() += ga * ga.transpose();
-  Eigen::SelfAdjointEigenSolver<Mat3> es;
-  es.computeDirect(GGt, Eigen::EigenvaluesOnly);
-  return {GGt.trace(), es.eigenvalues().maxCoeff()};
+  return {GGt.trace(), symmetric_eigenvalues(GGt).maxCoeff()};
 }
 
 // V (p |G|_F² + 2 q σ_max(G)²): (p, q) = (λ, μ), or (φ, ψ) for damping.

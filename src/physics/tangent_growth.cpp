@@ -1,9 +1,10 @@
 #include "physics/tangent_growth.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "core/symmetric_eigenvalues.hpp"
 
 namespace mrsim {
 
@@ -20,9 +21,7 @@ Mat3 green_strain(const Mat3& grad_u) {
 }
 
 StrainTop strain_top_of(const Mat3& E) {
-  Eigen::SelfAdjointEigenSolver<Mat3> es;
-  es.computeDirect(E, Eigen::EigenvaluesOnly);
-  return {es.eigenvalues()(2), E.trace()};
+  return {symmetric_eigenvalues(E)(2), E.trace()};
 }
 
 StrainTop strain_top(const Mat3& grad_u) { return strain_top_of(green_strain(grad_u)); }

@@ -14,8 +14,9 @@ namespace {
 
 // Bumped whenever the fit (targets, weights, pull, stopping) changes what it returns.
 // 2: per_tet's local loads; 3: per_tet's seven factors per tet, sags at the finest points;
-// 4: the per-tet fit without Eigen's thread-count-dependent parallel products.
-constexpr int kFitVersion = 4;
+// 4: the per-tet fit without Eigen's thread-count-dependent parallel products; 5: its exp, log
+// and start vectors from core/portable_math.hpp (the same bits on every processor).
+constexpr int kFitVersion = 5;
 constexpr std::size_t kAnyCount = std::numeric_limits<std::size_t>::max();
 
 // Binary since 2026-12-02: as JSON, liver_probe's per-tet factors (14 000 numbers, 340 KB) took
