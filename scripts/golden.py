@@ -50,10 +50,15 @@ def host():
             f" model {cpu.get('model', '?')}; {libc}")
 
 
+def recorded_host():
+    """The host the references were written on (tests/golden/HOST), or None."""
+    return HOST_FILE.read_text().strip() if HOST_FILE.exists() else None
+
+
 def tolerance():
     """The `mrsim compare` options for this host: none (bits) on the host kind that wrote the
     references, else a relative tolerance, said on stderr."""
-    written_on = HOST_FILE.read_text().strip() if HOST_FILE.exists() else None
+    written_on = recorded_host()
     here = host()
     if written_on in (None, here) or os.environ.get("MRSIM_GOLDEN_EXACT") == "1":
         return []
@@ -135,7 +140,7 @@ def update(args):
     cases = read_cases()
     names = args.names or list(cases)
     here = host()
-    written_on = HOST_FILE.read_text().strip() if HOST_FILE.exists() else None
+    written_on = recorded_host()
     if written_on not in (None, here) and set(names) != set(cases):
         print(f"golden: the other references were written on '{written_on}', this host is "
               f"'{here}': update every case so that they all come from one host", file=sys.stderr)

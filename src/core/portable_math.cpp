@@ -1,5 +1,6 @@
 #include "core/portable_math.hpp"
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -59,6 +60,15 @@ double scaled(double v, int k) {
   return v * pow2(k);
 }
 
+// c[0] x^(n-1) + ... + c[n-1] by Horner's rule, highest power first: every polynomial below is
+// evaluated this one way, so its bits follow from its coefficients alone.
+template <std::size_t N>
+double horner(double x, const std::array<double, N>& c) {
+  double p = c[0];
+  for (std::size_t k = 1; k < N; ++k) p = p * x + c[k];
+  return p;
+}
+
 // Nearest integer to t (halves away from zero), |t| < 2^62.
 std::int64_t nearest(double t) {
   return static_cast<std::int64_t>(t >= 0 ? t + 0.5 : t - 0.5);
@@ -66,33 +76,39 @@ std::int64_t nearest(double t) {
 
 // sin and cos on |r| <= pi/4 (plus the reduction's rounding): Taylor series to r^21 / r^20,
 // whose first omitted term is below 2^-70 of the value there.
+// sin r = r + r z (-1/3! + z/5! - ... + z^9/21!), z = r^2.
+constexpr std::array<double, 10> kSinTail = {
+    1.0 / 51090942171709440000.0, -1.0 / 121645100408832000.0, 1.0 / 355687428096000.0,
+    -1.0 / 1307674368000.0,       1.0 / 6227020800.0,           -1.0 / 39916800.0,
+    1.0 / 362880.0,               -1.0 / 5040.0,                1.0 / 120.0,
+    -1.0 / 6.0};
+// cos r = 1 - (z/2 - z^2 (1/4! - z/6! + ... + z^8/20!)).
+constexpr std::array<double, 9> kCosTail = {
+    1.0 / 2432902008176640000.0, -1.0 / 6402373705728000.0, 1.0 / 20922789888000.0,
+    -1.0 / 87178291200.0,        1.0 / 479001600.0,         -1.0 / 3628800.0,
+    1.0 / 40320.0,               -1.0 / 720.0,              1.0 / 24.0};
+// exp r = 1 + (r + r^2 (1/2! + r/3! + ... + r^12/14!)).
+constexpr std::array<double, 13> kExpTail = {
+    1.0 / 87178291200.0, 1.0 / 6227020800.0, 1.0 / 479001600.0, 1.0 / 39916800.0,
+    1.0 / 3628800.0,     1.0 / 362880.0,     1.0 / 40320.0,     1.0 / 5040.0,
+    1.0 / 720.0,         1.0 / 120.0,        1.0 / 24.0,        1.0 / 6.0,
+    0.5};
+// log(1 + f) = f - s (f - R), R = z (2/3 + 2z/5 + ... + 2z^11/25), s = f / (2 + f), z = s^2.
+constexpr std::array<double, 12> kLogSeries = {2.0 / 25, 2.0 / 23, 2.0 / 21, 2.0 / 19,
+                                               2.0 / 17, 2.0 / 15, 2.0 / 13, 2.0 / 11,
+                                               2.0 / 9,  2.0 / 7,  2.0 / 5,  2.0 / 3};
+// atan u = u + u z (-1/3 + z/5 - ... + z^7/17), z = u^2.
+constexpr std::array<double, 8> kAtanTail = {1.0 / 17, -1.0 / 15, 1.0 / 13, -1.0 / 11,
+                                             1.0 / 9,  -1.0 / 7,  1.0 / 5,  -1.0 / 3};
+
 double sin_near_zero(double r) {
   const double z = r * r;
-  double p = 1.0 / 51090942171709440000.0;  // 1/21!
-  p = p * z - 1.0 / 121645100408832000.0;   // 1/19!
-  p = p * z + 1.0 / 355687428096000.0;      // 1/17!
-  p = p * z - 1.0 / 1307674368000.0;        // 1/15!
-  p = p * z + 1.0 / 6227020800.0;           // 1/13!
-  p = p * z - 1.0 / 39916800.0;             // 1/11!
-  p = p * z + 1.0 / 362880.0;               // 1/9!
-  p = p * z - 1.0 / 5040.0;                 // 1/7!
-  p = p * z + 1.0 / 120.0;                  // 1/5!
-  p = p * z - 1.0 / 6.0;                    // 1/3!
-  return r + r * z * p;
+  return r + r * z * horner(z, kSinTail);
 }
 
 double cos_near_zero(double r) {
   const double z = r * r;
-  double q = 1.0 / 2432902008176640000.0;  // 1/20!
-  q = q * z - 1.0 / 6402373705728000.0;    // 1/18!
-  q = q * z + 1.0 / 20922789888000.0;      // 1/16!
-  q = q * z - 1.0 / 87178291200.0;         // 1/14!
-  q = q * z + 1.0 / 479001600.0;           // 1/12!
-  q = q * z - 1.0 / 3628800.0;             // 1/10!
-  q = q * z + 1.0 / 40320.0;               // 1/8!
-  q = q * z - 1.0 / 720.0;                 // 1/6!
-  q = q * z + 1.0 / 24.0;                  // 1/4!
-  return 1.0 - (0.5 * z - z * z * q);
+  return 1.0 - (0.5 * z - z * z * horner(z, kCosTail));
 }
 
 struct Reduced {
@@ -118,15 +134,7 @@ Reduced reduce(double x) {
 // atan on u in [-1/16, 1/16]: series to u^17, first omitted term below 2^-90.
 double atan_near_zero(double u) {
   const double z = u * u;
-  double p = 1.0 / 17;
-  p = p * z - 1.0 / 15;
-  p = p * z + 1.0 / 13;
-  p = p * z - 1.0 / 11;
-  p = p * z + 1.0 / 9;
-  p = p * z - 1.0 / 7;
-  p = p * z + 1.0 / 5;
-  p = p * z - 1.0 / 3;
-  return u + u * z * p;
+  return u + u * z * horner(z, kAtanTail);
 }
 
 // atan(t), t in [0, 1]: atan(c) + atan((t - c) / (1 + t c)) with c the nearest eighth, so
@@ -149,20 +157,7 @@ double exp(double x) {
   const double kd = static_cast<double>(k);
   const double r = (x - kd * kLn2Hi) - kd * kLn2Lo;  // |r| <= ln2 / 2 (about)
   // exp(r): Taylor series to r^14, first omitted term below 2^-70 of the value.
-  double p = 1.0 / 87178291200.0;  // 1/14!
-  p = p * r + 1.0 / 6227020800.0;
-  p = p * r + 1.0 / 479001600.0;
-  p = p * r + 1.0 / 39916800.0;
-  p = p * r + 1.0 / 3628800.0;
-  p = p * r + 1.0 / 362880.0;
-  p = p * r + 1.0 / 40320.0;
-  p = p * r + 1.0 / 5040.0;
-  p = p * r + 1.0 / 720.0;
-  p = p * r + 1.0 / 120.0;
-  p = p * r + 1.0 / 24.0;
-  p = p * r + 1.0 / 6.0;
-  p = p * r + 0.5;
-  const double e_r = 1.0 + (r + r * r * p);
+  const double e_r = 1.0 + (r + r * r * horner(r, kExpTail));
   return scaled(e_r, static_cast<int>(k));
 }
 
@@ -187,19 +182,7 @@ double log(double x) {
   // <= 0.0295, to z^12.
   const double f = m - 1.0;  // exact
   const double s = f / (2.0 + f), z = s * s;
-  double R = 2.0 / 25;
-  R = R * z + 2.0 / 23;
-  R = R * z + 2.0 / 21;
-  R = R * z + 2.0 / 19;
-  R = R * z + 2.0 / 17;
-  R = R * z + 2.0 / 15;
-  R = R * z + 2.0 / 13;
-  R = R * z + 2.0 / 11;
-  R = R * z + 2.0 / 9;
-  R = R * z + 2.0 / 7;
-  R = R * z + 2.0 / 5;
-  R = R * z + 2.0 / 3;
-  R *= z;
+  const double R = z * horner(z, kLogSeries);
   const double log_m = f - s * (f - R);
   const double ed = e;
   return ed * kLn2Hi + (ed * kLn2Lo + log_m);
