@@ -27,6 +27,7 @@
 #include "contact/tool_surface.hpp"
 #include "simulation/checkpoint_state.hpp"
 #include "simulation/contact_setup.hpp"
+#include "simulation/mesh_cache.hpp"
 #include "simulation/divergence.hpp"
 #include "simulation/frame_timing.hpp"
 #include "simulation/hierarchy_diagnostics.hpp"
@@ -56,7 +57,7 @@ std::vector<TetMesh> load_meshes(const Scenario& sc) {
   std::vector<TetMesh> meshes;
   for (const LevelSpec& level : sc.levels) {
     MeshReadReport report;
-    meshes.push_back(read_tet_mesh(level.mesh, sc.units, &report));
+    meshes.push_back(read_level_mesh(level.mesh, sc.units, &report));
     for (const std::string& w : report.warnings) warn(w);
   }
   return meshes;
