@@ -7,6 +7,7 @@
 #include "compare/diff_text.hpp"
 #include "compare/pvd_frames.hpp"
 #include "compare/vtm_frames.hpp"
+#include "core/vtk_module.hpp"
 
 namespace mrsim {
 namespace {
@@ -50,7 +51,7 @@ class FramesDiffer {
     for (std::size_t i = 0; i < count; ++i) {
       label_ = "frame " + std::to_string(frame_number(a[i].file, static_cast<long long>(i))) +
                " (t = " + number_text(a[i].time) + " s)";
-      compare_frame(read_vtm_frame(a[i].file), read_vtm_frame(b[i].file));
+      compare_frame(vtk_module().read_vtm_frame(a[i].file), vtk_module().read_vtm_frame(b[i].file));
     }
     report_.frames_compared(count);
   }

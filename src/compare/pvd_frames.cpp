@@ -5,9 +5,14 @@
 
 #include "compare/vtk_xml_index.hpp"
 #include "core/error.hpp"
+#include "core/vtk_module.hpp"
 
 namespace mrsim {
 namespace {
+
+InputError index_error(const std::filesystem::path& file, const std::string& message) {
+  return InputError(file.string() + ": " + message);
+}
 
 double parse_time(const std::string& text, const std::filesystem::path& pvd) {
   double value = 0;
@@ -22,7 +27,7 @@ double parse_time(const std::string& text, const std::filesystem::path& pvd) {
 
 std::vector<PvdFrame> read_pvd_frames(const std::filesystem::path& pvd) {
   std::vector<PvdFrame> frames;
-  for (const XmlAttributes& entry : read_dataset_entries(pvd, "Collection")) {
+  for (const XmlAttributes& entry : vtk_module().read_dataset_entries(pvd, "Collection")) {
     const double time = parse_time(required_attribute(entry, "timestep", pvd), pvd);
     frames.push_back({time, pvd.parent_path() / required_attribute(entry, "file", pvd)});
   }
@@ -38,6 +43,16 @@ long long frame_number(const std::filesystem::path& vtm, long long fallback) {
   const char* end = stem.data() + stem.size();
   const auto [stop, ec] = std::from_chars(begin, end, number);
   return ec == std::errc() && stop == end && begin != end ? number : fallback;
+}
+
+// Here, not beside read_dataset_entries: that one is in VTK's library (core/vtk_module.hpp),
+// this one is called on both sides of it.
+const std::string& required_attribute(const XmlAttributes& entry, const std::string& name,
+                                      const std::filesystem::path& file) {
+  const auto it = entry.find(name);
+  if (it == entry.end())
+    throw index_error(file, "a DataSet element has no '" + name + "' attribute");
+  return it->second;
 }
 
 }  // namespace mrsim

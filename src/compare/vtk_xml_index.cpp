@@ -61,12 +61,4 @@ std::vector<XmlAttributes> read_dataset_entries(const std::filesystem::path& fil
   return entries;
 }
 
-const std::string& required_attribute(const XmlAttributes& entry, const std::string& name,
-                                      const std::filesystem::path& file) {
-  const auto it = entry.find(name);
-  if (it == entry.end())
-    throw index_error(file, "a DataSet element has no '" + name + "' attribute");
-  return it->second;
-}
-
 }  // namespace mrsim

@@ -13,6 +13,7 @@
 
 #include "io/frame_data.hpp"
 #include "io/frame_compression.hpp"
+#include "io/frame_series_writer.hpp"
 
 class vtkMultiBlockDataSet;
 
@@ -24,11 +25,11 @@ class PieceWriters;
 class SwappedFile;
 class FileRecycler;
 
-class VtkSeriesWriter {
+class VtkSeriesWriter final : public FrameSeriesWriter {
  public:
   explicit VtkSeriesWriter(std::filesystem::path out_dir,
                            FrameCompression compression = FrameCompression::Lz4);
-  ~VtkSeriesWriter();
+  ~VtkSeriesWriter() override;
   // Not movable: the destructor removes the staging folder of this writer's series.
   VtkSeriesWriter(const VtkSeriesWriter&) = delete;
   VtkSeriesWriter& operator=(const VtkSeriesWriter&) = delete;
@@ -37,7 +38,7 @@ class VtkSeriesWriter {
   /// failure, std::invalid_argument (before writing anything) on inconsistent sizes.
   void write_frame(int frame_index, double time, std::span<const LevelFrameView> levels,
                    const SurfaceFrameView* surface = nullptr,
-                   std::span<const ToolFrameView> tools = {});
+                   std::span<const ToolFrameView> tools = {}) override;
   int frames_written() const { return static_cast<int>(entries_.size()); }
   /// Compressed blocks taken unchanged from the frame before (io/vtk_repeat_compressor.hpp).
   std::size_t reused_blocks() const;
@@ -49,7 +50,7 @@ class VtkSeriesWriter {
   /// (index, time) are its frames up to there, each of which must be complete on disk (else
   /// InputError). Every later frame and any partial one are removed (a run killed after its
   /// checkpoint wrote them), and frames.pvd lists the kept frames.
-  void resume(std::span<const std::pair<int, double>> kept, int last);
+  void resume(std::span<const std::pair<int, double>> kept, int last) override;
 
  private:
   struct Entry { int index; double time; std::filesystem::path file; };

@@ -9,7 +9,8 @@
 #include "mesh/mesh_check.hpp"
 #include "mesh/mesh_input.hpp"
 #include "mesh/tetgen_reader.hpp"
-#include "mesh/vtu_reader.hpp"
+#include "core/vtk_module.hpp"
+#include "mesh/raw_mesh.hpp"
 
 namespace mrsim {
 namespace {
@@ -27,7 +28,7 @@ bool is_surface_extension(const std::string& ext) {
 RawMesh read_raw(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
   if (ext == ".msh") return read_gmsh(path);
-  if (ext == ".vtu") return read_vtu(path);
+  if (ext == ".vtu") return vtk_module().read_vtu(path);  // mesh/vtu_reader.hpp
   if (ext == ".mesh" || ext == ".meshb") return read_medit(path);
   if (ext == ".node" || ext == ".ele") return read_tetgen(path);
   if (is_surface_extension(ext))

@@ -20,7 +20,8 @@
 #include "io/hdf5_log.hpp"
 #include "io/run_folder.hpp"
 #include "io/summary_json.hpp"
-#include "io/vtk_series_writer.hpp"
+#include "core/vtk_module.hpp"
+#include "io/frame_series_writer.hpp"
 #include "mesh/mesh_reader.hpp"
 #include "mrsim/version.hpp"
 #include "physics/green_nodal_forces.hpp"
@@ -168,7 +169,7 @@ class FrameWriter {
       log_ = std::make_unique<Hdf5Log>(sc.output.dir / "log.h5", header);
     }
     if (sc.output.vtk) {
-      vtk_ = std::make_unique<VtkSeriesWriter>(sc.output.dir, sc.output.compression);
+      vtk_ = vtk_module().series_writer(sc.output.dir, sc.output.compression);
       if (resume) vtk_->resume(vtk_frames_up_to(sc, resume->run.frame), resume->run.frame);
     }
   }
@@ -342,7 +343,7 @@ class FrameWriter {
   std::vector<std::vector<std::int8_t>> simulated_by_;  // per tet (fill_simulated)
   std::unique_ptr<LevelOwnership> ownership_;   // built at the first VTK frame
   std::unique_ptr<Hdf5Log> log_;
-  std::unique_ptr<VtkSeriesWriter> vtk_;
+  std::unique_ptr<FrameSeriesWriter> vtk_;  // io/vtk_series_writer.hpp
   TaskClock::Parts run_parts_{};
   double unaccounted_log_write_ = 0;  // s: the last row's append, not yet in any frame's parts
   std::vector<TriangleSurface> tool_surfaces_;  // per tool, in the tool frame

@@ -1,0 +1,67 @@
+#include "core/vtk_module.hpp"
+
+#include <dlfcn.h>
+#include <link.h>
+
+#include <cstring>
+#include <string>
+#include <system_error>
+
+#include "core/error.hpp"
+
+// Defined by VTK's part (io/vtk_module_entry.cpp). Weak: a program without that part links, and
+// loads the library instead.
+extern "C" const mrsim::VtkEntryPoints* mrsim_vtk_entry_points() __attribute__((weak));
+
+namespace mrsim {
+
+namespace {
+
+constexpr const char* kLibrary = "libmrsim_vtk.so";
+
+std::filesystem::path library_path() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::filesystem::path(kLibrary) : exe.parent_path() / kLibrary;
+}
+
+const VtkEntryPoints* load() {
+  if (mrsim_vtk_entry_points != nullptr) return mrsim_vtk_entry_points();  // linked in
+  const std::filesystem::path path = library_path();
+  // RTLD_NOW: a symbol the executable does not export is said here, not at some later call.
+  void* library = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (library == nullptr) {
+    const char* why = ::dlerror();
+    throw RunError("cannot load " + path.string() +
+                   " (mrsim's VTK readers and writers, built beside mrsim by scripts/build.sh): " +
+                   (why ? why : "unknown reason"));
+  }
+  void* entry = ::dlsym(library, "mrsim_vtk_entry_points");
+  if (entry == nullptr)
+    throw RunError(path.string() + " is not mrsim's VTK library: no mrsim_vtk_entry_points");
+  const VtkEntryPoints* (*entry_points)();
+  static_assert(sizeof entry_points == sizeof entry);
+  std::memcpy(&entry_points, &entry, sizeof entry);  // POSIX: a function's address as void*
+  return entry_points();  // the library stays loaded until the process ends
+}
+
+int find_vtk(struct dl_phdr_info* info, std::size_t, void* found) {
+  if (info->dlpi_name != nullptr && std::strstr(info->dlpi_name, "libvtkCommonCore") != nullptr)
+    *static_cast<bool*>(found) = true;
+  return 0;
+}
+
+}  // namespace
+
+const VtkEntryPoints& vtk_module() {
+  static const VtkEntryPoints* const entry = load();  // a failed load is tried again next time
+  return *entry;
+}
+
+bool vtk_is_loaded() {
+  bool found = false;
+  ::dl_iterate_phdr(find_vtk, &found);
+  return found;
+}
+
+}  // namespace mrsim
