@@ -1,8 +1,12 @@
 #include "simulation/mesh_cache.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -12,7 +16,6 @@
 
 #include "core/byte_record.hpp"
 #include "core/log.hpp"
-#include "core/text_file.hpp"
 #include "simulation/result_cache.hpp"
 
 namespace mrsim {
@@ -30,15 +33,39 @@ bool is_vtu(const std::filesystem::path& path) {
   return ext == ".vtu";
 }
 
+// The file's bytes read in blocks into one buffer on the stack and hashed as they come: a
+// string of the whole file cost more in fresh pages than the hash (1 ms of a warm set-up).
+// Nothing when it cannot be read or is empty (read_tet_mesh then says why, or reads nothing).
+std::optional<std::uint64_t> content_hash(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return std::nullopt;
+  InputHash h;
+  // A multiple of 8, as InputHash::bytes() steps: whole blocks hash as the whole file would (a
+  // short read would give another key: one cache miss).
+  std::array<char, 1 << 16> block;
+  std::size_t total = 0;
+  for (;;) {
+    const ssize_t n = ::read(fd, block.data(), block.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      ::close(fd);
+      if (n < 0 || total == 0) return std::nullopt;
+      h.value(total);
+      return h.h;
+    }
+    h.bytes(block.data(), static_cast<std::size_t>(n));
+    total += static_cast<std::size_t>(n);
+  }
+}
+
 // The path too: the reader's warnings name it, and a copy elsewhere must say its own.
-std::string key_of(const std::filesystem::path& path, const std::string& bytes, LengthUnit unit) {
+std::string key_of(const std::filesystem::path& path, std::uint64_t content, LengthUnit unit) {
   InputHash h;
   h.value(kMeshRecordVersion);
   const std::string name = path.string();
   h.value(name.size());
   h.bytes(name.data(), name.size());
-  h.value(bytes.size());
-  h.bytes(bytes.data(), bytes.size());
+  h.value(content);
   h.value(static_cast<int>(unit));
   h.build();  // the reader's checks and repairs are this build's
   return h.hex();
@@ -131,9 +158,9 @@ TetMesh read_level_mesh(const std::filesystem::path& path, LengthUnit unit,
                         MeshReadReport* report, bool* reused) {
   if (reused) *reused = false;
   const bool keep = is_vtu(path) && !result_cache_dir("meshes").empty();
-  const std::string bytes = keep ? read_text_if_any(path) : std::string();
-  if (bytes.empty()) return read_tet_mesh(path, unit, report);  // its errors, unkept
-  const std::string key = key_of(path, bytes, unit);
+  const std::optional<std::uint64_t> content = keep ? content_hash(path) : std::nullopt;
+  if (!content) return read_tet_mesh(path, unit, report);  // its errors, unkept
+  const std::string key = key_of(path, *content, unit);
   const std::filesystem::path file = file_of(key);
   MeshReadReport read;
   std::optional<TetMesh> known;
@@ -150,7 +177,7 @@ TetMesh read_level_mesh(const std::filesystem::path& path, LengthUnit unit,
   TetMesh mesh = read_tet_mesh(path, unit, &read);
   // Kept only if the file did not change while VTK read it: else the record would hold another
   // mesh than its key's bytes.
-  if (read_text_if_any(path) == bytes) write_cached_bytes(file, key, record_of(mesh, read), "mesh");
+  if (content_hash(path) == content) write_cached_bytes(file, key, record_of(mesh, read), "mesh");
   hand_over(std::move(read), report);
   return mesh;
 }
