@@ -5,9 +5,11 @@
 
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <system_error>
 
 #include "core/error.hpp"
+#include "mrsim/version.hpp"
 
 // Defined by VTK's part (io/vtk_module_entry.cpp). Weak: a program without that part links, and
 // loads the library instead.
@@ -42,7 +44,9 @@ const VtkEntryPoints* load() {
   const VtkEntryPoints* (*entry_points)();
   static_assert(sizeof entry_points == sizeof entry);
   std::memcpy(&entry_points, &entry, sizeof entry);  // POSIX: a function's address as void*
-  return entry_points();  // the library stays loaded until the process ends
+  const VtkEntryPoints* e = entry_points();  // the library stays loaded until the process ends
+  check_vtk_entry_points(*e, path);
+  return e;
 }
 
 int find_vtk(struct dl_phdr_info* info, std::size_t, void* found) {
@@ -56,6 +60,18 @@ int find_vtk(struct dl_phdr_info* info, std::size_t, void* found) {
 const VtkEntryPoints& vtk_module() {
   static const VtkEntryPoints* const entry = load();  // a failed load is tried again next time
   return *entry;
+}
+
+void check_vtk_entry_points(const VtkEntryPoints& e, const std::filesystem::path& library) {
+  // The size first: a table of another layout may not even hold a revision where this one does.
+  if (e.size != sizeof(VtkEntryPoints))
+    throw RunError(library.string() + " is from another build of mrsim (its entry table has " +
+                   std::to_string(e.size) + " bytes, not " +
+                   std::to_string(sizeof(VtkEntryPoints)) + "): rebuild with scripts/build.sh");
+  if (e.git_revision == nullptr || std::string_view(e.git_revision) != kGitRevision)
+    throw RunError(library.string() + " was built from revision " +
+                   (e.git_revision ? e.git_revision : "?") + ", this mrsim from " +
+                   kGitRevision + ": rebuild both with scripts/build.sh");
 }
 
 bool vtk_is_loaded() {

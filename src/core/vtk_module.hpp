@@ -6,6 +6,7 @@
 // never needs them. mrsim's VTK readers and writers are built into libmrsim_vtk.so beside the
 // executable, which exports the rest of mrsim to it; a program that links them in itself (the
 // tests, mrsim-mesh) uses its own copy and loads nothing.
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -24,6 +25,10 @@ using XmlAttributes = std::map<std::string, std::string>;
 /// (mesh/vtu_reader.hpp, io/vtk_series_writer.hpp, compare/vtk_xml_index.hpp,
 /// compare/vtm_frames.hpp).
 struct VtkEntryPoints {
+  // First, and checked before anything else is read: a library from another build (a partial
+  // rebuild, a copy) could lay out this table or its types otherwise.
+  std::size_t size;          // sizeof(VtkEntryPoints) where the library was built
+  const char* git_revision;  // kGitRevision of the library's build
   RawMesh (*read_vtu)(const std::filesystem::path& path);
   std::unique_ptr<FrameSeriesWriter> (*series_writer)(const std::filesystem::path& out_dir,
                                                       FrameCompression compression);
@@ -33,8 +38,13 @@ struct VtkEntryPoints {
 };
 
 /// The entry points, loading libmrsim_vtk.so from the executable's folder on first use. Throws
-/// RunError naming the library and the loader's reason when it cannot be loaded.
+/// RunError naming the library and the loader's reason when it cannot be loaded, or when it was
+/// built from another revision than this mrsim.
 const VtkEntryPoints& vtk_module();
+
+/// RunError unless `e`, found in `library`, was built with this mrsim (same table, same
+/// revision).
+void check_vtk_entry_points(const VtkEntryPoints& e, const std::filesystem::path& library);
 
 /// Whether VTK's libraries are in the process (for the tests of this laziness).
 bool vtk_is_loaded();

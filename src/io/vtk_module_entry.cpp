@@ -7,6 +7,7 @@
 #include "core/vtk_module.hpp"
 #include "io/vtk_series_writer.hpp"
 #include "mesh/vtu_reader.hpp"
+#include "mrsim/version.hpp"
 
 namespace mrsim {
 namespace {
@@ -16,8 +17,8 @@ std::unique_ptr<FrameSeriesWriter> series_writer(const std::filesystem::path& ou
   return std::make_unique<VtkSeriesWriter>(out_dir, compression);
 }
 
-constexpr VtkEntryPoints kEntryPoints{&read_vtu, &series_writer, &read_dataset_entries,
-                                      &read_vtm_frame};
+constexpr VtkEntryPoints kEntryPoints{sizeof(VtkEntryPoints), kGitRevision, &read_vtu,
+                                      &series_writer, &read_dataset_entries, &read_vtm_frame};
 
 }  // namespace
 }  // namespace mrsim

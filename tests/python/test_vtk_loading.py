@@ -4,7 +4,7 @@ and a run whose .vtu meshes come from the result cache with its frames off never
 libraries (seen through the loader's own trace, LD_DEBUG=files); a run that reads a .vtu the
 first time, or writes frames, loads libmrsim_vtk.so from beside the binary and writes the same
 frames as ever; an mrsim without that library beside it says so and exits 1 only when it needs
-VTK, and still runs what does not."""
+VTK, and still runs what does not; a library of another revision is refused."""
 import os
 import shutil
 import subprocess
@@ -61,6 +61,22 @@ def main():
               % (code, " ".join(l for l in err.splitlines() if "cannot load" in l)))
         code, _, _ = traced(lone, quiet, cache)
         check(code == 0, "without it, a run that needs no VTK still runs (exit %d)" % code)
+
+        # A library from another build (here its revision string altered, nothing else): refused
+        # before any of its functions runs.
+        library = os.path.join(os.path.dirname(os.path.abspath(args.binary)), "libmrsim_vtk.so")
+        revision = subprocess.run([args.binary, "--version"], capture_output=True,
+                                  text=True).stdout.split("(")[1].split(")")[0]
+        with open(library, "rb") as f:
+            data = f.read()
+        marked = data.replace(revision.encode() + b"\0", b"X" + revision[1:].encode() + b"\0")
+        with open(os.path.join(alone, "libmrsim_vtk.so"), "wb") as f:
+            f.write(marked)
+        code, err, _ = traced(lone, framed, cache)
+        said = " ".join(l for l in err.splitlines() if "built from revision" in l)
+        check(marked != data and code == 1 and "built from revision X" + revision[1:] in said
+              and "this mrsim from " + revision in said,
+              "a library of another revision is refused, exit 1 (exit %d): %s" % (code, said))
     return cli.report()
 
 
