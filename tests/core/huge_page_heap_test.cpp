@@ -45,6 +45,11 @@ TEST(HugePageHeap, LargeArraysComeFromTheAdvisedHeap) {
   EXPECT_LT(reinterpret_cast<std::uintptr_t>(array), reinterpret_cast<std::uintptr_t>(sbrk(0)));
   const std::string flags = vm_flags_of(static_cast<char*>(array) + (std::size_t{2} << 20));
   EXPECT_NE(flags.find(" hg"), std::string::npos) << flags;
+  // It starts where the advised pages do (within the 4 KiB page below the first 2 MiB boundary),
+  // not in the part of the heap below them, which would fault in 4 KiB pages first.
+  const auto at = reinterpret_cast<std::uintptr_t>(array);
+  const std::uintptr_t huge = std::uintptr_t{2} << 20;
+  EXPECT_LT(((at + huge - 1) & ~(huge - 1)) - at, std::uintptr_t{4096}) << std::hex << at;
   std::free(array);
 #endif
 }
