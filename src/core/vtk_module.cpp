@@ -1,7 +1,6 @@
 #include "core/vtk_module.hpp"
 
 #include <dlfcn.h>
-#include <link.h>
 
 #include <cstring>
 #include <string>
@@ -49,12 +48,6 @@ const VtkEntryPoints* load() {
   return e;
 }
 
-int find_vtk(struct dl_phdr_info* info, std::size_t, void* found) {
-  if (info->dlpi_name != nullptr && std::strstr(info->dlpi_name, "libvtkCommonCore") != nullptr)
-    *static_cast<bool*>(found) = true;
-  return 0;
-}
-
 }  // namespace
 
 const VtkEntryPoints& vtk_module() {
@@ -72,12 +65,6 @@ void check_vtk_entry_points(const VtkEntryPoints& e, const std::filesystem::path
     throw RunError(library.string() + " was built from revision " +
                    (e.git_revision ? e.git_revision : "?") + ", this mrsim from " +
                    kGitRevision + ": rebuild both with scripts/build.sh");
-}
-
-bool vtk_is_loaded() {
-  bool found = false;
-  ::dl_iterate_phdr(find_vtk, &found);
-  return found;
 }
 
 }  // namespace mrsim

@@ -46,7 +46,4 @@ const VtkEntryPoints& vtk_module();
 /// revision).
 void check_vtk_entry_points(const VtkEntryPoints& e, const std::filesystem::path& library);
 
-/// Whether VTK's libraries are in the process (for the tests of this laziness).
-bool vtk_is_loaded();
-
 }  // namespace mrsim
