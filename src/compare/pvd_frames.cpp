@@ -10,10 +10,6 @@
 namespace mrsim {
 namespace {
 
-InputError index_error(const std::filesystem::path& file, const std::string& message) {
-  return InputError(file.string() + ": " + message);
-}
-
 double parse_time(const std::string& text, const std::filesystem::path& pvd) {
   double value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -51,7 +47,7 @@ const std::string& required_attribute(const XmlAttributes& entry, const std::str
                                       const std::filesystem::path& file) {
   const auto it = entry.find(name);
   if (it == entry.end())
-    throw index_error(file, "a DataSet element has no '" + name + "' attribute");
+    throw InputError(file.string() + ": a DataSet element has no '" + name + "' attribute");
   return it->second;
 }
 

@@ -4,13 +4,13 @@
 #include <cctype>
 #include <string>
 
+#include "core/vtk_module.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "mesh/medit_reader.hpp"
 #include "mesh/mesh_check.hpp"
 #include "mesh/mesh_input.hpp"
-#include "mesh/tetgen_reader.hpp"
-#include "core/vtk_module.hpp"
 #include "mesh/raw_mesh.hpp"
+#include "mesh/tetgen_reader.hpp"
 
 namespace mrsim {
 namespace {

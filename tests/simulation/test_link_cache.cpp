@@ -12,6 +12,7 @@
 #include "core/text_file.hpp"
 #include "hierarchy/hierarchy_fixture.hpp"
 #include "simulation/cache_folder.hpp"
+#include "simulation/cached_payload.hpp"
 #include "simulation/link_cache.hpp"
 
 using namespace mrsim;
@@ -76,17 +77,6 @@ void expect_same_binding(const SkinBinding& a, const SkinBinding& b) {
   }
 }
 
-// The file's payload rewritten by `edit` and stored again under its own key, with a checksum
-// that holds: only the reader's own checks can refuse it.
-template <class Edit>
-void rewrite_payload(const std::filesystem::path& file, Edit edit) {
-  std::string bytes = read_text_if_any(file);
-  constexpr std::size_t kHeader = 8 + 16 + 16;  // magic, key, size, checksum
-  std::string payload = bytes.substr(kHeader);
-  edit(payload);
-  const std::string name = file.stem().string();
-  write_cached_bytes(file, name.substr(name.rfind('_') + 1), payload, "test");
-}
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 #include "core/text_file.hpp"
 #include "mesh/mesh_test_support.hpp"
 #include "simulation/cache_folder.hpp"
+#include "simulation/cached_payload.hpp"
 #include "simulation/mesh_cache.hpp"
 #include "simulation/result_cache.hpp"
 
@@ -51,16 +52,6 @@ void expect_same(const MeshReadReport& a, const MeshReadReport& b) {
   EXPECT_EQ(a.notes, b.notes);
 }
 
-// `file`'s payload rewritten by `edit` under its own key, with a checksum that holds.
-template <class Edit>
-void rewrite_payload(const std::filesystem::path& file, Edit edit) {
-  const std::string bytes = read_text_if_any(file);
-  constexpr std::size_t kHeader = 8 + 16 + 16;  // magic, key, size, checksum
-  std::string payload = bytes.substr(kHeader);
-  edit(payload);
-  const std::string name = file.stem().string();
-  write_cached_bytes(file, name.substr(name.rfind('_') + 1), payload, "test");
-}
 
 }  // namespace
 
