@@ -210,6 +210,29 @@ TEST(Hdf5Log, PerFrameDatasetsAreChunkedAndUnlimited) {
   }
 }
 
+// Each frame's flush writes whole pages (hdf5_log.cpp says why): the file space is paged, and
+// the superblock stays at version 2, which HDF5 opens after a killed run (version 3 would keep
+// an "open for writing" mark and refuse it).
+TEST(Hdf5Log, FileSpaceIsPagedUnderAVersion2Superblock) {
+  test::TempDir dir;
+  const auto path = dir.path() / "log.h5";
+  LogFixture fixture;
+  { Hdf5Log log(path, fixture.header()); }
+  H5Id file(test::open_read_only(path), H5Fclose);
+  H5Id creation(H5Fget_create_plist(file), H5Pclose);
+  H5F_fspace_strategy_t strategy{};
+  hbool_t persist = true;
+  hsize_t threshold = 0, page = 0;
+  ASSERT_GE(H5Pget_file_space_strategy(creation, &strategy, &persist, &threshold), 0);
+  EXPECT_EQ(strategy, H5F_FSPACE_STRATEGY_PAGE);
+  EXPECT_FALSE(persist);
+  ASSERT_GE(H5Pget_file_space_page_size(creation, &page), 0);
+  EXPECT_EQ(page, 16u * 1024);
+  unsigned superblock = 0;
+  ASSERT_GE(H5Pget_version(creation, &superblock, nullptr, nullptr, nullptr), 0);
+  EXPECT_EQ(superblock, 2u);
+}
+
 // zlib's set-up is paid per chunk, so per frame: a level's status rows are deflated from 1024
 // points on, where they save more than they cost, and stored as they are below.
 TEST(Hdf5Log, StatusRowsAreDeflatedFromAThousandPointsOn) {
