@@ -58,13 +58,14 @@ void tet_pass_and_scatter(const LevelModel& m, IndexSet points, IndexSet tets,
   ws.reserve_for(m);
   const int* ids = tets.ids ? tets.ids : ws.all_tets.data();
   const bool every_point = !points.ids && points.count == m.num_points();
-  unsigned char* mask = every_point ? nullptr : ws.point_mask.data();
+  const bool packed = ws.packed.packs(tets);
+  unsigned char* mask = every_point || (packed && ws.packed.closed) ? nullptr : ws.point_mask.data();
   for (int k = 0; k < points.count; ++k) {
     f[points[k]] = Vec3::Zero();
     if (mask) mask[points[k]] = 1;
   }
   if (m.law.strain == StrainMeasure::GreenLagrange) {
-    if (ws.packed.packs(tets))
+    if (packed)
       green_scatter_packed(m, ws.packed, u, v, weight, mask, f);
     else
       green_scatter_forces(m, ids, tets.count, u, v, weight, mask, f);

@@ -4,8 +4,9 @@
 
 namespace mrsim {
 
-void PackedTets::pack(const TetGeometry& geo, const std::vector<int>& ids) {
+void PackedTets::pack(const TetGeometry& geo, const std::vector<int>& ids, bool closed_list) {
   source = ids.data();
+  closed = closed_list;
   count = static_cast<int>(ids.size());
   tets.resize(count);
   grad.resize(count);
@@ -33,6 +34,7 @@ void PackedTets::clear() {
   weight.clear();
   weight_source = nullptr;
   order.clear();
+  closed = false;
 }
 
 }  // namespace mrsim

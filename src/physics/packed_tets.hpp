@@ -24,9 +24,14 @@ struct PackedTets {
   std::vector<double> weight;
   const double* weight_source = nullptr;  // the weights gathered; nullptr: none yet (stale)
   std::vector<int> order;      // 0 .. count-1: the kernel's tet list
+  // Every vertex of these tets is among the points each pass over them is given: a coupled
+  // level's live tets and its active points and ghosts (method.md §4.9 invariant I2). The pass
+  // then writes without the points' mask (a lookup per vertex).
+  bool closed = false;
 
   /// Copies the tets `ids` (ascending) of `geo`; `ids` must stay the list passed in later.
-  void pack(const TetGeometry& geo, const std::vector<int>& ids);
+  /// `closed`: see above.
+  void pack(const TetGeometry& geo, const std::vector<int>& ids, bool closed = false);
   void clear();
   /// Is `tets` the list packed?
   bool packs(IndexSet tets) const { return count > 0 && tets.ids == source && tets.count == count; }

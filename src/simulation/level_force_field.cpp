@@ -43,7 +43,7 @@ void LevelForceField::refresh_tets() {
   // Part of the level: its tets streamed from a contiguous copy (physics/packed_tets.hpp).
   if (model_.law.strain == StrainMeasure::GreenLagrange && !tets_.empty() &&
       static_cast<int>(tets_.size()) < model_.num_tets())
-    ws_.packed.pack(model_.geo, tets_);
+    ws_.packed.pack(model_.geo, tets_, /*closed=*/hierarchy_ != nullptr);
   else
     ws_.packed.clear();
 }

@@ -287,3 +287,58 @@ TEST(TetPass, OneAndTwoThreadsGiveTheSameBits) {
   }
   omp_set_num_threads(saved_threads);
 }
+
+// A packed list said to be closed (a coupled level's live tets, whose every vertex is an active
+// point or a ghost: invariant I2) is passed without the points' mask, with the same bits where
+// the points cover the tets; an open one keeps the mask, and the points outside the set keep
+// their values. The closed flag is a promise the caller keeps: broken here on purpose, the
+// vertices outside the set receive forces, which shows the mask really is skipped.
+TEST(TetPass, ClosedPackedListSkipsTheMaskWithTheSameBits) {
+  const TetMesh mesh = jittered_box(4);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> d(-1, 1);
+  std::vector<Vec3> u(mesh.points.size()), v(mesh.points.size());
+  for (auto& x : u) x = 2e-2 * Vec3(d(rng), d(rng), d(rng));
+  for (auto& x : v) x = Vec3(d(rng), d(rng), d(rng));
+  const LevelModel m = build_level_model(mesh, law(StrainMeasure::GreenLagrange, 3, 7));
+  std::vector<int> seeds, tets, covered;
+  for (int i = 0; i < m.num_points(); i += 5) seeds.push_back(i);
+  std::vector<unsigned char> mark(m.num_tets(), 0);
+  live_tets(m, IndexSet::of(seeds), mark, tets);
+  std::vector<unsigned char> in(m.num_points(), 0);
+  for (int t : tets)
+    for (int p : m.geo.tets[t]) in[p] = 1;
+  for (int i = 0; i < m.num_points(); ++i)
+    if (in[i]) covered.push_back(i);
+  ASSERT_LT(covered.size(), static_cast<size_t>(m.num_points()));
+  std::vector<double> weight(m.num_tets(), 0.0);
+  for (size_t k = 0; k < tets.size(); ++k) weight[tets[k]] = 0.25 + (k % 3) * 0.25;
+  const Vec3 untouched(7, 7, 7);
+  const int saved_threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const auto pass = [&](const std::vector<int>& points, bool closed) {
+    ForceWorkspace ws;
+    ws.packed.pack(m.geo, tets, closed);
+    std::vector<Vec3> f(u.size(), untouched);
+    weighted_internal_forces(m, IndexSet::of(points), IndexSet::of(tets), weight.data(),
+                             u.data(), v.data(), f.data(), ws);
+    return f;
+  };
+  const std::vector<Vec3> open = pass(covered, false), closed = pass(covered, true);
+  EXPECT_EQ(std::memcmp(open.data(), closed.data(), open.size() * sizeof(Vec3)), 0);
+  int outside = 0;
+  for (int i = 0; i < m.num_points(); ++i) outside += !in[i] && open[i] == untouched;
+  EXPECT_EQ(outside, m.num_points() - static_cast<int>(covered.size()));
+  // The seeds alone do not cover their tets: masked, only the seeds move; unmasked, the
+  // other vertices of the tets receive forces too.
+  const std::vector<Vec3> masked = pass(seeds, false), unmasked = pass(seeds, true);
+  int masked_others = 0, unmasked_others = 0;
+  for (int i = 0; i < m.num_points(); ++i)
+    if (in[i] && i % 5 != 0) {
+      masked_others += masked[i] != untouched;
+      unmasked_others += unmasked[i] != untouched;
+    }
+  EXPECT_EQ(masked_others, 0);
+  EXPECT_GT(unmasked_others, 0);
+  omp_set_num_threads(saved_threads);
+}
