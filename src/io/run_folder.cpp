@@ -36,22 +36,29 @@ std::string holder_of(int fd) {
   return n > 0 ? " (pid " + std::string(pid.data(), static_cast<std::size_t>(n)) + ")" : "";
 }
 
-// `inside` is `outer` or below it (both made absolute and normal first).
-bool is_within(const fs::path& inside, const fs::path& outer) {
+fs::path normal(const fs::path& p) {
   std::error_code ec;
-  const fs::path a = fs::weakly_canonical(inside, ec), b = fs::weakly_canonical(outer, ec);
-  const auto [end, _] = std::mismatch(b.begin(), b.end(), a.begin(), a.end());
-  return end == b.end();
+  return fs::weakly_canonical(p, ec);
+}
+
+// `inside` is `outer` or below it (both absolute and normal: normal()).
+bool is_within(const fs::path& inside, const fs::path& outer) {
+  const auto [end, _] = std::mismatch(outer.begin(), outer.end(), inside.begin(), inside.end());
+  return end == outer.end();
 }
 
 void clear_previous_run(const fs::path& dir, const std::vector<fs::path>& inputs) {
+  std::vector<fs::path> normal_inputs;  // each resolved once, not once per output it is held to
   for (const char* name : kOutputs) {
     std::error_code ec;
     if (!fs::exists(dir / name, ec)) continue;
-    for (const fs::path& input : inputs)
-      if (!input.empty() && is_within(input, dir / name))
+    if (normal_inputs.empty())
+      for (const fs::path& input : inputs) normal_inputs.push_back(input.empty() ? input : normal(input));
+    const fs::path output = normal(dir / name);
+    for (std::size_t k = 0; k < inputs.size(); ++k)
+      if (!inputs[k].empty() && is_within(normal_inputs[k], output))
         throw InputError("the output folder " + dir.string() + " holds an input of this run, " +
-                         input.string() + ", where the run writes " + name +
+                         inputs[k].string() + ", where the run writes " + name +
                          "; choose another output folder (-o)");
     // The old frames are not removed but kept for the new ones' files (io/file_recycler.hpp);
     // what the new run does not reuse goes when it ends.
