@@ -44,16 +44,39 @@ void InputHash::mesh(const TetMesh& m) {
   bytes(m.tets.data(), m.tets.size() * sizeof(Tet));
 }
 
+namespace {
+
+struct ExecutableIdentity {
+  bool known = false;
+  std::uintmax_t size = 0;
+  std::int64_t written = 0;
+};
+
+// Looked up once per process: every cache a run reads keys by it (ten a liver_probe start).
+const ExecutableIdentity& executable_identity() {
+  static const ExecutableIdentity identity = [] {
+    ExecutableIdentity id;
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec) return id;
+    id.size = std::filesystem::file_size(exe, ec);
+    id.written = static_cast<std::int64_t>(
+        std::filesystem::last_write_time(exe, ec).time_since_epoch().count());
+    id.known = true;
+    return id;
+  }();
+  return identity;
+}
+
+}  // namespace
+
 void InputHash::build() {
   for (const std::string_view part : {std::string_view(kVersion), std::string_view(kGitRevision)})
     bytes(part.data(), part.size());
-  std::error_code ec;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) return;
-  const auto size = std::filesystem::file_size(exe, ec);
-  const auto written = std::filesystem::last_write_time(exe, ec).time_since_epoch().count();
-  value(size);
-  value(written);
+  const ExecutableIdentity& exe = executable_identity();
+  if (!exe.known) return;
+  value(exe.size);
+  value(exe.written);
 }
 
 std::string InputHash::hex() const {
