@@ -22,9 +22,35 @@ inline double by_row(int i, double a0, double a1, double a2) {
 
 constexpr int kDiagonal[3] = {0, 4, 8};  // the diagonal of a 3 × 3 row-major matrix
 
+// Where value j of tet t lies in blocked packed data of n values per tet (GreenKernelData).
+inline const double* blocked(const double* blocks, int n, int t) {
+  return blocks + (t / kPackedBlock) * n * kPackedBlock + t % kPackedBlock;
+}
+
+// Values 0..N-1 of the block's B tets from blocked packed data: whole rows when the tets are
+// consecutive within one packed block (every full block of a packed list), else tet by tet.
+template <int N, int B>
+void from_blocks(const double* blocks, const int* tets, double (&out)[N][B]) {
+  const int t0 = tets[0];
+  if (tets[B - 1] - t0 == B - 1 && t0 % kPackedBlock + B <= kPackedBlock) {
+    const double* s = blocked(blocks, N, t0);
+    for (int j = 0; j < N; ++j)
+      for (int b = 0; b < B; ++b) out[j][b] = s[j * kPackedBlock + b];
+    return;
+  }
+  for (int b = 0; b < B; ++b) {
+    const double* s = blocked(blocks, N, tets[b]);
+    for (int j = 0; j < N; ++j) out[j][b] = s[j * kPackedBlock];
+  }
+}
+
 // The block's shape gradients ∇N_a (component k of vertex a, per tet), gathered once.
 template <int B>
 void shape_gradients(const GreenKernelData& m, const int* tets, double (&g)[4][3][B]) {
+  if (m.grad_blocks) {
+    from_blocks<12, B>(m.grad_blocks, tets, reinterpret_cast<double(&)[12][B]>(g));
+    return;
+  }
   for (int b = 0; b < B; ++b) {
     const double(&grad)[4][3] = m.grad[tets[b]];
     for (int a = 0; a < 4; ++a)
@@ -144,9 +170,13 @@ void block_forces(const GreenKernelData& m, const int* tets, const double (*u)[3
   // PerTet: each tet's scales gathered first, so that the products below run across the block
   // like the level's (per tet they were a third of a calibrated block's own time).
   double scales[PerTet ? 10 : 1][B];
-  if constexpr (PerTet)
-    for (int b = 0; b < B; ++b)
-      for (int k = 0; k < 10; ++k) scales[k][b] = m.tet_scales[tets[b]][k];
+  if constexpr (PerTet) {
+    if (m.scale_blocks)
+      from_blocks<10, B>(m.scale_blocks, tets, scales);
+    else
+      for (int b = 0; b < B; ++b)
+        for (int k = 0; k < 10; ++k) scales[k][b] = m.tet_scales[tets[b]][k];
+  }
   if constexpr (PerTet) {
     double tr[B];
     for (int b = 0; b < B; ++b) tr[b] = right(S[0][b], S[4][b], S[8][b]);  // still E here
@@ -271,7 +301,8 @@ void all_blocks(const GreenKernelData& m, const int* tets, int count, const doub
   constexpr int kBlock = Sink::kBlock;
   int k = 0;
   for (; k + kBlock <= count; k += kBlock) {
-    if (k + 2 * kBlock <= count) prefetch_gradients<kBlock>(m, tets + k + kBlock);
+    // Blocked packed data is read in order, as the processor's own prefetch expects.
+    if (!m.grad_blocks && k + 2 * kBlock <= count) prefetch_gradients<kBlock>(m, tets + k + kBlock);
     block<kBlock, Damped, PerTet>(m, tets + k, u, v, sink);
   }
   if constexpr (kBlock > 8)

@@ -17,7 +17,18 @@ struct GreenKernelData {
   // the law's own λ, μ, φ, ψ in `base` as kernel_data() applies a level's: null for none.
   const double (*tet_scales)[10] = nullptr;
   double base[4] = {0, 0, 0, 0};
+  // A packed copy (physics/packed_tets.hpp) also holds ∇N and the per-tet scales in blocks of
+  // kPackedBlock tets, component by component: value j of tet t at
+  // [(t / kPackedBlock) * n * kPackedBlock + j * kPackedBlock + t % kPackedBlock], n = 12 for ∇N
+  // (j = 3a + k), 10 for the scales. A block of consecutive tets then reads them as vectors
+  // instead of transposing each tet's row. Null for a level's own arrays. The lists passed over
+  // such data are ascending (PackedTets::order).
+  const double* grad_blocks = nullptr;
+  const double* scale_blocks = nullptr;
 };
+
+/// Tets per block of GreenKernelData::grad_blocks and scale_blocks: the kernel's widest block.
+inline constexpr int kPackedBlock = 16;
 
 /// No upper bound on the points a scattering pass writes (one thread owns them all).
 inline constexpr int kAllPoints = 1 << 30;

@@ -181,8 +181,10 @@ void green_scatter_packed(const LevelModel& m, PackedTets& packed, const Vec3* u
     for (int k = 0; k < n; ++k) packed.weight[k] = weight[packed.source[k]];
     packed.weight_source = weight;
   }
-  const GreenKernelData d =
+  GreenKernelData d =
       kernel_data(m.law, packed.tets.data(), packed.grad.data(), packed.volume.data(), packed.scales);
+  d.grad_blocks = packed.grad_blocks.data();
+  if (!packed.scale_blocks.empty()) d.scale_blocks = packed.scale_blocks.data();
   scatter(d, packed.order.data(), n, u, v, weight ? packed.weight.data() : nullptr, mask, f, 0,
           kAllPoints);
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/index_set.hpp"
+#include "physics/green_kernel_data.hpp"
 #include "physics/tet_geometry.hpp"
 
 namespace mrsim {
@@ -19,6 +20,9 @@ struct PackedTets {
   std::vector<TetGradients> grad;
   std::vector<double> volume;
   std::vector<StiffnessScales> scales;  // TetGeometry::scales (empty without them)
+  // ∇N and the scales again in blocks of kPackedBlock tets, component by component
+  // (GreenKernelData::grad_blocks, scale_blocks): what the kernel reads.
+  std::vector<double> grad_blocks, scale_blocks;
   // Per packed tet, gathered from the level's weights at the first pass after pack() or after
   // they were edited (LevelForceField::edit_tet_weights()), never per step.
   std::vector<double> weight;

@@ -229,6 +229,34 @@ TEST(GreenScatterForces, BitIdenticalToTheGatherOfGreenPiola) {
       EXPECT_EQ(std::memcmp(expected.data(), f.data(), f.size() * sizeof(Vec3)), 0)
           << "packed" << (weighted ? " weighted" : "") << (damped ? " damped" : "")
           << (tensors ? " per-tet tensors" : "");
+      // Every build over the packed copy, ∇N and the scales read from its blocks (whole rows
+      // for the full blocks, the eight and the four after them; tet by tet for the padded
+      // last one): the same bits.
+      GreenKernelData d = green_kernel_data(m);
+      d.grad = reinterpret_cast<const double(*)[4][3]>(packed.grad.data());
+      d.tets = reinterpret_cast<const int(*)[4]>(packed.tets.data());
+      d.volume = packed.volume.data();
+      d.grad_blocks = packed.grad_blocks.data();
+      if (tensors) {
+        d.tet_scales = reinterpret_cast<const double(*)[10]>(packed.scales.data());
+        d.scale_blocks = packed.scale_blocks.data();
+      }
+      ASSERT_EQ(packed.grad_blocks.size(), 12u * 16 * ((list.size() + 15) / 16));
+      ASSERT_EQ(packed.scale_blocks.size(), tensors ? 10u * 16 * ((list.size() + 15) / 16) : 0u);
+      std::vector<double> packed_weight(list.size());
+      for (size_t k = 0; k < list.size(); ++k) packed_weight[k] = weight[list[k]];
+      for (const auto& [name, scatter] : scatters()) {
+        if (scatter == nullptr) continue;
+        std::vector<Vec3> g(m.num_points(), Vec3::Zero());
+        scatter(d, packed.order.data(), static_cast<int>(list.size()),
+                reinterpret_cast<const double(*)[3]>(u.data()),
+                reinterpret_cast<const double(*)[3]>(v.data()),
+                GreenScatterTarget{weighted ? packed_weight.data() : nullptr, mask.data(),
+                                   reinterpret_cast<double(*)[3]>(g.data())});
+        EXPECT_EQ(std::memcmp(expected.data(), g.data(), g.size() * sizeof(Vec3)), 0)
+            << name << " over blocks" << (weighted ? " weighted" : "")
+            << (damped ? " damped" : "") << (tensors ? " per-tet tensors" : "");
+      }
     }
   }
 }
