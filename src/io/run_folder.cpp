@@ -53,7 +53,8 @@ void clear_previous_run(const fs::path& dir, const std::vector<fs::path>& inputs
     std::error_code ec;
     if (!fs::exists(dir / name, ec)) continue;
     if (normal_inputs.empty())
-      for (const fs::path& input : inputs) normal_inputs.push_back(input.empty() ? input : normal(input));
+      for (const fs::path& input : inputs)
+        normal_inputs.push_back(input.empty() ? input : normal(input));
     const fs::path output = normal(dir / name);
     for (std::size_t k = 0; k < inputs.size(); ++k)
       if (!inputs[k].empty() && is_within(normal_inputs[k], output))

@@ -59,7 +59,9 @@ void tet_pass_and_scatter(const LevelModel& m, IndexSet points, IndexSet tets,
   const int* ids = tets.ids ? tets.ids : ws.all_tets.data();
   const bool every_point = !points.ids && points.count == m.num_points();
   const bool packed = ws.packed.packs(tets);
-  unsigned char* mask = every_point || (packed && ws.packed.closed) ? nullptr : ws.point_mask.data();
+  // A closed packed list's vertices are all among `points` (PackedTets::closed): no mask.
+  const bool unmasked = every_point || (packed && ws.packed.closed);
+  unsigned char* mask = unmasked ? nullptr : ws.point_mask.data();
   for (int k = 0; k < points.count; ++k) {
     f[points[k]] = Vec3::Zero();
     if (mask) mask[points[k]] = 1;
