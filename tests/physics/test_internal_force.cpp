@@ -69,6 +69,16 @@ double force_scale(const LevelModel& m) { return (m.law.lambda + 2 * m.law.mu) *
 
 class BothModels : public ::testing::TestWithParam<StrainMeasure> {};
 
+// Displacements of about 2 % of the box and velocities of order one, from `seed`.
+void random_state(const TetMesh& mesh, unsigned seed, std::vector<Vec3>& u, std::vector<Vec3>& v) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(-1, 1);
+  u.resize(mesh.points.size());
+  v.resize(mesh.points.size());
+  for (auto& x : u) x = 2e-2 * Vec3(d(rng), d(rng), d(rng));
+  for (auto& x : v) x = Vec3(d(rng), d(rng), d(rng));
+}
+
 }  // namespace
 
 TEST_P(BothModels, PatchTestLinearFieldGivesZeroInteriorForce) {
@@ -221,11 +231,8 @@ TEST(Damping, RigidRotationRateIsNotDamped) {
 // strain measures. Points outside the set are left as they were.
 TEST(TetPass, OneAndTwoThreadsGiveTheSameBits) {
   const TetMesh mesh = jittered_box(4);
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> d(-1, 1);
-  std::vector<Vec3> u(mesh.points.size()), v(mesh.points.size());
-  for (auto& x : u) x = 2e-2 * Vec3(d(rng), d(rng), d(rng));
-  for (auto& x : v) x = Vec3(d(rng), d(rng), d(rng));
+  std::vector<Vec3> u, v;
+  random_state(mesh, 11, u, v);
   const int saved = parallel_threshold(), saved_threads = omp_get_max_threads();
   for (StrainMeasure s : {StrainMeasure::Cauchy, StrainMeasure::GreenLagrange}) {
     const LevelModel m = build_level_model(mesh, law(s, 3, 7));
@@ -295,11 +302,8 @@ TEST(TetPass, OneAndTwoThreadsGiveTheSameBits) {
 // vertices outside the set receive forces, which shows the mask really is skipped.
 TEST(TetPass, ClosedPackedListSkipsTheMaskWithTheSameBits) {
   const TetMesh mesh = jittered_box(4);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> d(-1, 1);
-  std::vector<Vec3> u(mesh.points.size()), v(mesh.points.size());
-  for (auto& x : u) x = 2e-2 * Vec3(d(rng), d(rng), d(rng));
-  for (auto& x : v) x = Vec3(d(rng), d(rng), d(rng));
+  std::vector<Vec3> u, v;
+  random_state(mesh, 5, u, v);
   const LevelModel m = build_level_model(mesh, law(StrainMeasure::GreenLagrange, 3, 7));
   std::vector<int> seeds, tets, covered;
   for (int i = 0; i < m.num_points(); i += 5) seeds.push_back(i);
